@@ -1,0 +1,27 @@
+"""The package is well-formed as catkin sees it (workspace path, named
+exp_assignment2): catkin_lint -W2 --strict reports nothing."""
+import os
+import shutil
+import subprocess
+
+import pytest
+
+
+def package_dir():
+    try:
+        out = subprocess.run(['rospack', 'find', 'exp_assignment2'], stdout=subprocess.PIPE,
+                             universal_newlines=True, timeout=30)
+    except FileNotFoundError:
+        return None
+    return out.stdout.strip() or None
+
+
+@pytest.mark.skipif(shutil.which('catkin_lint') is None, reason='catkin_lint not installed')
+def test_catkin_lint_is_clean():
+    path = package_dir()
+    assert path, 'rospack cannot find exp_assignment2: source the workspace (tools/run does)'
+    assert os.path.basename(path) == 'exp_assignment2'
+    proc = subprocess.run(['catkin_lint', '-W2', '--strict', path], stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, universal_newlines=True, timeout=120)
+    problems = [l for l in proc.stdout.splitlines() if 'error' in l or 'warning' in l]
+    assert proc.returncode == 0 and not problems, proc.stdout
