@@ -1,0 +1,79 @@
+"""Finding the green ball in a camera image (plain OpenCV, no ROS).
+
+The pipeline of the original: blur 11x11, HSV, in-range (50, 50, 20) to
+(70, 255, 255), erode x2, dilate x2, largest external contour, minimum
+enclosing circle, centroid. A ball counts when its radius exceeds 10 px at
+800 px of image width, scaled to the actual width.
+"""
+from collections import namedtuple
+
+import cv2
+import numpy as np
+
+GREEN_LOWER = (50, 50, 20)
+GREEN_UPPER = (70, 255, 255)
+REFERENCE_WIDTH = 800.0
+MIN_RADIUS_AT_REFERENCE = 10.0
+# The 11x11 Gaussian (sigma 2 px) spreads green about one sigma past the
+# ball's edge before the in-range threshold: the enclosing circle is that much
+# too big. Subtracting it makes the radius estimate the ball's own.
+BLUR_HALO_PX = 2.0
+
+Ball = namedtuple('Ball', 'x y radius cx cy')
+Ball.__doc__ = """A detected ball: enclosing circle (x, y, radius) and centroid (cx, cy), px."""
+
+
+def decode_jpeg(data):
+    """BGR image from JPEG bytes (a CompressedImage's data), or None."""
+    return cv2.imdecode(np.frombuffer(data, np.uint8), cv2.IMREAD_COLOR)
+
+
+def encode_jpeg(bgr, quality=80):
+    """JPEG bytes of a BGR image."""
+    ok, buf = cv2.imencode('.jpg', bgr, [int(cv2.IMWRITE_JPEG_QUALITY), int(quality)])
+    if not ok:
+        raise ValueError('JPEG encoding failed')
+    return buf.tobytes()
+
+
+class BallDetector(object):
+    """Detects the largest green blob; ignores blobs below the radius threshold."""
+
+    def __init__(self, min_radius_at_800=MIN_RADIUS_AT_REFERENCE):
+        self.min_radius_at_800 = float(min_radius_at_800)
+        self.last_mask = None
+
+    def min_radius(self, width):
+        """The threshold (px) for an image ``width`` px wide."""
+        return self.min_radius_at_800 * width / REFERENCE_WIDTH
+
+    def detect(self, bgr):
+        """Return a :class:`Ball` or None for a BGR image."""
+        blurred = cv2.GaussianBlur(bgr, (11, 11), 0)
+        hsv = cv2.cvtColor(blurred, cv2.COLOR_BGR2HSV)
+        mask = cv2.inRange(hsv, GREEN_LOWER, GREEN_UPPER)
+        mask = cv2.erode(mask, None, iterations=2)
+        mask = cv2.dilate(mask, None, iterations=2)
+        self.last_mask = mask
+        contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_SIMPLE)
+        if not contours:
+            return None
+        largest = max(contours, key=cv2.contourArea)
+        (x, y), radius = cv2.minEnclosingCircle(largest)
+        radius = max(radius - BLUR_HALO_PX, 0.0)
+        if radius <= self.min_radius(bgr.shape[1]):
+            return None
+        m = cv2.moments(largest)
+        if m['m00'] > 0:
+            cx, cy = m['m10'] / m['m00'], m['m01'] / m['m00']
+        else:
+            cx, cy = x, y
+        return Ball(float(x), float(y), float(radius), float(cx), float(cy))
+
+
+def annotate(bgr, ball):
+    """Draw the ball's circle and centroid on ``bgr`` in place (as the original)."""
+    if ball is not None:
+        cv2.circle(bgr, (int(ball.x), int(ball.y)), int(ball.radius), (0, 255, 255), 2)
+        cv2.circle(bgr, (int(ball.cx), int(ball.cy)), 5, (0, 0, 255), -1)
+    return bgr

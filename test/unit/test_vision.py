@@ -1,0 +1,74 @@
+"""The ball detector on synthetic images with known answers."""
+import cv2
+import numpy as np
+import pytest
+
+from exp_assignment2.vision import BallDetector, annotate, decode_jpeg, encode_jpeg
+
+GREEN = (0, 204, 0)   # BGR of the ball's RGB (0, 0.8, 0)
+
+
+def scene(width=320, height=320, ball=None):
+    img = np.full((height, width, 3), (200, 200, 200), np.uint8)
+    img[height // 2:] = (90, 90, 90)
+    if ball is not None:
+        cv2.circle(img, ball[:2], ball[2], GREEN, -1)
+    return img
+
+
+@pytest.mark.parametrize('centre,radius', [((160, 160), 40), ((100, 220), 25), ((250, 80), 60)])
+def test_ball_found_within_2px(centre, radius):
+    ball = BallDetector().detect(scene(ball=(centre[0], centre[1], radius)))
+    assert ball is not None
+    assert abs(ball.x - centre[0]) <= 2 and abs(ball.y - centre[1]) <= 2
+    assert abs(ball.cx - centre[0]) <= 2 and abs(ball.cy - centre[1]) <= 2
+    assert abs(ball.radius - radius) <= 2
+
+
+def test_no_ball_no_detection():
+    assert BallDetector().detect(scene()) is None
+
+
+def test_ball_cut_by_the_image_edge_is_still_found():
+    ball = BallDetector().detect(scene(ball=(0, 160, 50)))
+    assert ball is not None
+    assert ball.cx < 30
+    assert abs(ball.cy - 160) <= 2
+
+
+def test_tiny_blob_below_threshold_is_ignored():
+    # 10 px at 800 px wide is 4 px at 320: a 3 px blob does not count
+    detector = BallDetector()
+    assert detector.min_radius(320) == pytest.approx(4.0)
+    assert detector.detect(scene(ball=(160, 160, 3))) is None
+    assert detector.detect(scene(ball=(160, 160, 8))) is not None
+
+
+def test_threshold_scales_with_width():
+    detector = BallDetector()
+    assert detector.min_radius(800) == pytest.approx(10.0)
+    assert detector.detect(scene(800, 800, ball=(400, 400, 9))) is None
+    assert detector.detect(scene(800, 800, ball=(400, 400, 20))) is not None
+
+
+def test_largest_blob_wins():
+    img = scene(ball=(80, 80, 20))
+    cv2.circle(img, (240, 240), 45, GREEN, -1)
+    ball = BallDetector().detect(img)
+    assert abs(ball.x - 240) <= 2 and abs(ball.radius - 45) <= 2
+
+
+def test_other_colours_are_not_the_ball():
+    img = scene()
+    cv2.circle(img, (160, 160), 50, (200, 30, 30), -1)    # blue
+    cv2.circle(img, (60, 60), 30, (30, 30, 200), -1)      # red
+    assert BallDetector().detect(img) is None
+
+
+def test_detection_survives_jpeg_and_annotation_draws():
+    img = scene(ball=(200, 150, 35))
+    decoded = decode_jpeg(encode_jpeg(img, 80))
+    ball = BallDetector().detect(decoded)
+    assert abs(ball.x - 200) <= 2 and abs(ball.y - 150) <= 2
+    out = annotate(decoded.copy(), ball)
+    assert (out != decoded).any()
