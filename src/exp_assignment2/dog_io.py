@@ -46,7 +46,7 @@ class BallFollower(object):
 
     def __init__(self, cmd_pub, search_rate=0.5):
         self.cmd_pub = cmd_pub
-        self.target_radius_ratio = float(rospy.get_param('~target_radius_ratio', 0.25))
+        self.target_radius_ratio = float(rospy.get_param('~target_radius_ratio', 0.3))
         self.max_linear = float(rospy.get_param('~max_linear', 0.8))
         self.max_angular = float(rospy.get_param('~max_angular', 1.0))
         self.search_rate = search_rate

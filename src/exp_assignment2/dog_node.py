@@ -30,7 +30,11 @@ def main_state_machine():
         raise SystemExit(1)
     sm = build_state_machine(dog)
     report_active_state(sm, StateReporter())
-    sm.execute()
+    try:
+        sm.execute()
+    except Exception:
+        if not rospy.is_shutdown():    # a sleep interrupted by Ctrl-C is no error
+            raise
 
 
 def main_robot_to_ball():

@@ -189,7 +189,7 @@ class Play(smach.State):
                 if rest_since is not None and (now - rest_since).to_sec() >= p.rest_time:
                     if not self.sweep_head():
                         return 'shutdown'
-                    last_seen, rest_since = rospy.Time.now(), None
+                    rest_since = None
                 rate.sleep()
             return 'shutdown'
         finally:

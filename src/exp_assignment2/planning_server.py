@@ -174,7 +174,6 @@ class BallPlanningServer(PlanningServer):
         self.kp = float(rospy.get_param('~kp_d', 0.5))
         self.max_speed = float(rospy.get_param('~max_speed', 2.0))
         self.precision = float(rospy.get_param('~dist_precision', 0.1))
-        self.visible = True
         rospy.wait_for_service('/ball/set_visible', timeout=30.0)
         self.set_visible = rospy.ServiceProxy('/ball/set_visible', SetBool)
         PlanningServer.__init__(self, '/reaching_goal', '/ball/odom', '/ball/cmd_vel')
@@ -186,7 +185,6 @@ class BallPlanningServer(PlanningServer):
             rospy.logerr('%s: cannot %s the ball: %s', self.name,
                          'show' if visible else 'hide', exc)
             return False
-        self.visible = visible
         return True
 
     def begin(self, target):
@@ -197,7 +195,7 @@ class BallPlanningServer(PlanningServer):
             else:
                 self.server.set_aborted(PlanningResult(), 'the simulator did not hide the ball')
             return False
-        if not self.visible and not self._show(True):
+        if not self._show(True):      # idempotent: the ball may start hidden
             self.server.set_aborted(PlanningResult(), 'the simulator did not show the ball')
             return False
         return True

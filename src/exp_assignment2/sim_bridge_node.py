@@ -164,7 +164,7 @@ class SimBridge(object):
                 rospy.Subscriber(model.topic('joint_position_controller/command'), Float64,
                                  self._on_head, name, queue_size=1)
             if 'camera_link' in self.sim.bodies[name].links:
-                size = int(param('~camera_width', 320)), int(param('~camera_height', 320))
+                size = int(param('~camera_width', 200)), int(param('~camera_height', 200))
                 self.cameras.append(Camera(
                     self.sim, model, size[0], size[1],
                     float(param('~camera_hfov', 80.0)), float(param('~camera_rate', 30.0)),
@@ -213,9 +213,23 @@ class SimBridge(object):
         return EmptyResponse()
 
     # the loop
+    def wait_for_camera_subscriber(self, timeout):
+        """Hold the world still until a camera has a subscriber (or ``timeout``
+        wall s): at real_time_factor 0 it would otherwise run ahead of nodes
+        that are still starting."""
+        end = time.monotonic() + timeout
+        while (self.cameras and not any(c.wanted() for c in self.cameras)
+               and time.monotonic() < end and not rospy.is_shutdown()):
+            self._publish_clock()
+            self.stop.wait(0.05)
+        if self.cameras and not any(c.wanted() for c in self.cameras):
+            rospy.logwarn('simulator: no camera subscriber after %.0f s; starting anyway', timeout)
+
     def spin(self):
-        wall0, sim0 = time.monotonic(), self.sim.time
         self._publish_clock()
+        if rospy.get_param('~wait_for_camera', False):
+            self.wait_for_camera_subscriber(float(rospy.get_param('~start_timeout', 30.0)))
+        wall0, sim0 = time.monotonic(), self.sim.time
         while not rospy.is_shutdown() and not self.stop.is_set():
             while self.pending:
                 self.pending.popleft()()

@@ -127,6 +127,8 @@ class Simulator(object):
             p.changeDynamics(body_id, -1, lateralFriction=0.0, physicsClientId=self.client)
         if spec.kind == 'kinematic':
             body.kin_pose = [x, y, z, yaw]
+            body.visible = bool(spec.visible)
+            self._place_kinematic(body)
         if spec.grid_texture:
             if self._texture_id() is not None:
                 p.changeVisualShape(body_id, -1, textureUniqueId=self._texture,
@@ -188,7 +190,8 @@ class Simulator(object):
             body.cmd, body.cmd_time, body.head_target = (0.0, 0.0, 0.0), None, 0.0
             if body.kin_pose is not None:
                 body.kin_pose = [x, y, z, yaw]
-                body.visible = True
+                body.visible = bool(body.spec.visible)
+                self._place_kinematic(body)
 
     # stepping
     def step(self):

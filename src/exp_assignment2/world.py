@@ -34,6 +34,7 @@ class ModelSpec:
     namespace: str = ''
     base_frame: str = 'base_link'
     grid_texture: bool = False
+    visible: bool = True               # kinematic bodies may start hidden
     wheel_radius: float = 0.1
     wheel_separation: float = 0.3
     max_wheel_torque: float = 20.0
