@@ -33,7 +33,7 @@ class TestDogSleep(unittest.TestCase):
         def woke():
             return [t for t, s in self.dog.states if s == 'NORMAL' and t > arrived]
         # with sleep_probability 1 NORMAL lasts a moment before the next SLEEP
-        self.assertTrue(wait_until(woke, 20.0))
+        self.assertTrue(wait_until(woke, 30.0))  # last 0.4 m + 14 s asleep
         rested = (woke()[0] - arrived).to_sec()
         rospy.loginfo('rested %.1f s at home', rested)
         self.assertGreater(rested, 10.0)
