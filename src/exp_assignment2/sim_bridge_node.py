@@ -137,7 +137,7 @@ class SimBridge(object):
         self.odom_period = 1.0 / odom_rate
         self.next_odom = 0.0
         self.pending = collections.deque()     # commands from callbacks, run in the loop
-        self.paused = False
+        self.paused = bool(rospy.get_param('~paused', False))   # Gazebo's paused:=true
         self.stop = threading.Event()
         self.clock_pub = rospy.Publisher('/clock', Clock, queue_size=10)
         self.tf_pub = rospy.Publisher('/tf', TFMessage, queue_size=10)
@@ -233,8 +233,9 @@ class SimBridge(object):
         while not rospy.is_shutdown() and not self.stop.is_set():
             while self.pending:
                 self.pending.popleft()()
-            if self.paused:
-                self.stop.wait(0.01)
+            if self.paused:         # the clock stands still but is still published
+                self._publish_clock()
+                self.stop.wait(0.05)
                 wall0, sim0 = time.monotonic(), self.sim.time
                 continue
             self.sim.step()
