@@ -22,7 +22,6 @@ import threading
 import time
 
 import cv2
-import numpy as np
 import rospkg
 import rospy
 from geometry_msgs.msg import TransformStamped, Twist
@@ -52,6 +51,20 @@ def camera_info(width, height, hfov_rad, frame_id):
     info.R = [1, 0, 0, 0, 1, 0, 0, 0, 1]
     info.P = [f, 0, cx, 0, 0, f, cy, 0, 0, 0, 1, 0]
     return info
+
+
+def encode_frame(rgba, params):
+    """JPEG bytes of a rendered RGBA frame: the bridge's work per frame after
+    rendering (one colour conversion, one encode)."""
+    bgr = cv2.cvtColor(rgba, cv2.COLOR_RGBA2BGR)
+    ok, jpeg = cv2.imencode('.jpg', bgr, params)
+    if not ok:
+        raise ValueError('JPEG encoding failed')
+    return jpeg.tobytes()
+
+
+def jpeg_params(quality):
+    return [int(cv2.IMWRITE_JPEG_QUALITY), int(quality)]
 
 
 class Camera(object):
@@ -94,21 +107,21 @@ class Camera(object):
         self.info_pub.publish(self.info)
 
     def _encode_loop(self):
-        params = [int(cv2.IMWRITE_JPEG_QUALITY), self.quality]
+        params = jpeg_params(self.quality)
         while True:
             stamp, rgba = self.frames.get()
             if stamp is None:
                 return
-            bgr = cv2.cvtColor(rgba, cv2.COLOR_RGBA2BGR)
-            ok, jpeg = cv2.imencode('.jpg', bgr, params)
-            if not ok:
-                rospy.logerr_throttle(10, 'camera: JPEG encoding failed')
+            try:
+                data = encode_frame(rgba, params)
+            except ValueError as exc:
+                rospy.logerr_throttle(10, 'camera: %s' % exc)
                 continue
             msg = CompressedImage()
             msg.header.stamp = stamp
             msg.header.frame_id = 'camera_link'
             msg.format = JPEG_FORMAT
-            msg.data = jpeg.tobytes()
+            msg.data = data
             self.image_pub.publish(msg)
             self._publish_info(stamp)
 

@@ -279,12 +279,9 @@ class Simulator(object):
         return (names, [s[0] for s in states], [s[1] for s in states], [s[3] for s in states])
 
     # camera
-    def render(self, name, link, width, height, hfov_deg, near=0.05, far=40.0):
-        """Render from ``link`` of body ``name`` looking along the link's +x.
-
-        Returns an (height, width, 4) uint8 RGBA array (pybullet's own buffer,
-        not copied).
-        """
+    def camera_matrices(self, name, link, width, height, hfov_deg, near=0.05, far=40.0):
+        """pybullet (view, projection) matrices of a camera on ``link`` looking
+        along the link's +x with horizontal field of view ``hfov_deg``."""
         body = self.bodies[name]
         state = p.getLinkState(body.id, body.links[link], computeForwardKinematics=True,
                                physicsClientId=self.client)
@@ -295,10 +292,18 @@ class Simulator(object):
         # pybullet's fov is vertical: derive it from the horizontal one.
         aspect = float(width) / height
         vfov = math.degrees(2.0 * math.atan(math.tan(math.radians(hfov_deg) / 2.0) / aspect))
-        proj = p.computeProjectionMatrixFOV(vfov, aspect, near, far)
-        _, _, rgba, _, _ = p.getCameraImage(
-            width, height, view, proj, renderer=self._renderer,
-            flags=p.ER_NO_SEGMENTATION_MASK, physicsClientId=self.client)
+        return view, p.computeProjectionMatrixFOV(vfov, aspect, near, far)
+
+    def render_raw(self, width, height, view, proj):
+        """pybullet's own getCameraImage, nothing added (the benchmark's yardstick)."""
+        return p.getCameraImage(width, height, view, proj, renderer=self._renderer,
+                                flags=p.ER_NO_SEGMENTATION_MASK, physicsClientId=self.client)
+
+    def render(self, name, link, width, height, hfov_deg):
+        """Render from ``link`` of body ``name``; an (height, width, 4) uint8 RGBA
+        array (pybullet's own buffer, not copied)."""
+        view, proj = self.camera_matrices(name, link, width, height, hfov_deg)
+        rgba = self.render_raw(width, height, view, proj)[2]
         return np.asarray(rgba, dtype=np.uint8).reshape(height, width, 4)
 
     def close(self):
