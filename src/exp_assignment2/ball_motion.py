@@ -15,7 +15,7 @@ import rospy
 from nav_msgs.msg import Odometry
 from std_msgs.msg import Bool, String
 
-from exp_assignment2.commands import CommandError, parse_ball_command
+from exp_assignment2.commands import parse_ball_command, parse_or_report
 from exp_assignment2.msg import PlanningAction, PlanningGoal
 from exp_assignment2.world import ARENA_GOAL_LIMIT
 
@@ -114,10 +114,9 @@ class HumanBallCommands(object):
         self.position = msg.pose.pose.position
 
     def _on_command(self, msg):
-        try:
-            cmd = parse_ball_command(msg.data)
-        except CommandError as exc:
-            rospy.logerr('/ball/command: %s', exc)
+        cmd = parse_or_report(parse_ball_command, msg.data,
+                              lambda why: rospy.logerr('/ball/command: %s', why))
+        if cmd is None:
             return
         rospy.loginfo('/ball/command: %s', msg.data.strip())
         if cmd.kind == 'auto':

@@ -97,6 +97,15 @@ def parse_motion_command(text):
     return MotionCommand('go_to', x, y)
 
 
+def parse_or_report(parser, text, report):
+    """``parser(text)``, or None after ``report(reason)`` when it is refused."""
+    try:
+        return parser(text)
+    except CommandError as exc:
+        report(str(exc))
+        return None
+
+
 def format_go_to(x, y):
     """The text of a go-to command, as the nodes publish it."""
     return 'go to %d %d' % (x, y) if isinstance(x, int) else 'go to %g %g' % (x, y)

@@ -11,7 +11,7 @@ import threading
 import rospy
 from std_msgs.msg import String
 
-from exp_assignment2.commands import CommandError, parse_voice
+from exp_assignment2.commands import parse_or_report, parse_voice
 from exp_assignment2.msg import Gesture
 from exp_assignment2.world import GRID_MAX, GRID_MIN, on_grid
 
@@ -52,15 +52,12 @@ class Person(object):
         self.lock = threading.Condition()
         self.heard = []            # parsed voice commands not yet used
         self.gesture = None        # ((px, py), (gx, gy)) last valid gesture
-        self.fresh_gesture = False
         rospy.Subscriber('/voice', String, self._on_voice, queue_size=10)
         rospy.Subscriber('/gesture', Gesture, self._on_gesture, queue_size=10)
 
     def _on_voice(self, msg):
-        try:
-            cmd = parse_voice(msg.data)
-        except CommandError as exc:
-            rospy.logerr('/voice: %s', exc)
+        cmd = parse_or_report(parse_voice, msg.data, lambda why: rospy.logerr('/voice: %s', why))
+        if cmd is None:
             return
         rospy.loginfo('/voice: the person says %r', msg.data.strip())
         with self.lock:
@@ -77,7 +74,6 @@ class Person(object):
                       msg.person_y, msg.point_x, msg.point_y)
         with self.lock:
             self.gesture = ((msg.person_x, msg.person_y), (msg.point_x, msg.point_y))
-            self.fresh_gesture = True
             self.lock.notify_all()
 
     def clear(self):

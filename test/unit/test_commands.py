@@ -62,3 +62,12 @@ def test_motion_commands_rejected(text):
 def test_non_text_is_rejected():
     with pytest.raises(CommandError):
         parse_voice(None)
+
+
+def test_parse_or_report_reports_the_reason_once():
+    from exp_assignment2.commands import parse_or_report
+    reasons = []
+    assert parse_or_report(parse_voice, 'fly', reasons.append) is None
+    assert len(reasons) == 1 and 'accepted:' in reasons[0]
+    assert parse_or_report(parse_voice, 'play', reasons.append).kind == 'play'
+    assert len(reasons) == 1
