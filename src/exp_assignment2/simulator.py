@@ -49,6 +49,7 @@ class Body(object):
         self.id = body_id
         self.joints = joints           # name -> (index, lower, upper)
         self.links = {}                # link name -> index
+        self.movable = []              # (name, index) of non-fixed joints, in order
         self.cmd = (0.0, 0.0, 0.0)     # vx, vy, wz (body frame for robots)
         self.cmd_time = None           # sim time of the last command
         self.head_target = 0.0
@@ -114,6 +115,8 @@ class Simulator(object):
             info = p.getJointInfo(body_id, j, physicsClientId=self.client)
             joints[info[1].decode()] = (j, info[8], info[9])
             body.links[info[12].decode()] = j
+            if info[2] != p.JOINT_FIXED:
+                body.movable.append((info[1].decode(), j))
         if spec.kind == 'diff_drive':
             for name, (j, _, _) in joints.items():
                 if 'wheel' in name:
@@ -272,9 +275,8 @@ class Simulator(object):
     def joint_states(self, name):
         """(names, positions, velocities, efforts) of a body's movable joints."""
         body = self.bodies[name]
-        names = [n for n, (j, lo, hi) in sorted(body.joints.items(), key=lambda kv: kv[1][0])
-                 if p.getJointInfo(body.id, j, physicsClientId=self.client)[2] != p.JOINT_FIXED]
-        idx = [body.joints[n][0] for n in names]
+        names = [n for n, _ in body.movable]
+        idx = [j for _, j in body.movable]
         states = p.getJointStates(body.id, idx, physicsClientId=self.client) if idx else []
         return (names, [s[0] for s in states], [s[1] for s in states], [s[3] for s in states])
 
