@@ -138,7 +138,10 @@ class HumanBallCommands(object):
 
 def main_auto():
     rospy.init_node('move_ball_around')
-    BallAutoMotion().run()
+    try:
+        BallAutoMotion().run()
+    except rospy.ROSInterruptException:
+        pass    # Ctrl-C during a wait in ROS time: a normal end
 
 
 def main_human():
