@@ -120,7 +120,10 @@ class PlanningServer(object):
                 self.feedback(FEEDBACK[DONE], pose)
                 self.server.set_succeeded(PlanningResult(), FEEDBACK[DONE])
                 return
-            rate.sleep()
+            try:
+                rate.sleep()
+            except rospy.ROSInterruptException:
+                break           # shutting down: no traceback
         self.stop()
 
     def begin(self, target):
