@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
 """Turns /command into a grid point on /target_pos."""
-from exp_assignment2.miro_nodes import main_geometry_grounding
+from exp_assignment2.nodes.geometry_grounding import main
 
-main_geometry_grounding()
+main()

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""PlanningAction server /reaching_goal: moves (and hides) the ball."""
-from exp_assignment2.planning_server import main_ball
+"""PlanningAction server /reaching_goal: moves the ball; the goal's z is its height."""
+from exp_assignment2.nodes.go_to_point_ball import main
 
-main_ball()
+main()

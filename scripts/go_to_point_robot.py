@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
 """PlanningAction server /robot_reaching_goal: turn towards the goal, then drive."""
-from exp_assignment2.planning_server import main_robot
+from exp_assignment2.nodes.go_to_point_robot import main
 
-main_robot()
+main()

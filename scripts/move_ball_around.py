@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
 """Moves the ball to random goals, waits, hides it, waits, again."""
-from exp_assignment2.ball_motion import main_auto
+from exp_assignment2.nodes.move_ball_around import main
 
-main_auto()
+main()

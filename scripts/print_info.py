@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
 """Logs MiRo's state changes, commands, targets and arrivals."""
-from exp_assignment2.miro_nodes import main_print_info
+from exp_assignment2.nodes.print_info import main
 
-main_print_info()
+main()

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
 """Drives the omnidirectional MiRo to /target_pos."""
-from exp_assignment2.miro_nodes import main_motion_controller
+from exp_assignment2.nodes.robot_motion_controller import main
 
-main_motion_controller()
+main()

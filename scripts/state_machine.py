@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
 """The dog's behaviour: NORMAL, SLEEP and PLAY (SMACH)."""
-from exp_assignment2.dog_node import main_state_machine
+from exp_assignment2.nodes.state_machine import main
 
-main_state_machine()
+main()

@@ -2,32 +2,20 @@
 
 * :class:`GoToPoint`: the originals' go-to-point for a diff-drive robot: turn
   towards the goal, then drive while correcting the heading (REP 103: +z turns
-  left).
+  left; the ROS layer flips the sign for a robot wired the other way).
 * :func:`planar_velocity`: the ball's (and MiRo's) go-to-point, holonomic.
-* :func:`visual_servo`: the ball follower: turn rate proportional to the
-  ball's horizontal offset, forward speed proportional to the apparent-radius
-  error, both normalised by image width.
+* :func:`visual_servo` and :class:`BallFollower`: the ball follower: turn rate
+  proportional to the ball's horizontal offset, forward speed proportional to
+  the apparent-radius error, both normalised by image width.
 """
 import math
 from collections import namedtuple
 
+from exp_assignment2.geometry import cap_norm, clamp, normalize_angle
+
 FIX_YAW, GO_STRAIGHT, DONE = 'fix_yaw', 'go_straight', 'done'
 
-# The original's feedback wording (kept: existing clients may match on it).
-FEEDBACK = {FIX_YAW: 'Fixing the yaw', GO_STRAIGHT: 'Reaching the goal',
-            DONE: 'Target reached!'}
-ANGLE_ALIGNED = 'Angle aligned'
-
 Command = namedtuple('Command', 'linear angular')
-
-
-def normalize_angle(angle):
-    """Wrap an angle to [-pi, pi)."""
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
-
-
-def clamp(value, limit):
-    return max(-limit, min(limit, value))
 
 
 class GoToPoint(object):
@@ -72,12 +60,7 @@ class GoToPoint(object):
 
 def planar_velocity(x, y, goal_x, goal_y, kp=0.5, max_speed=2.0):
     """Holonomic go-to-point: (vx, vy) towards the goal, speed capped."""
-    dx, dy = goal_x - x, goal_y - y
-    vx, vy = kp * dx, kp * dy
-    speed = math.hypot(vx, vy)
-    if speed > max_speed:
-        vx, vy = vx * max_speed / speed, vy * max_speed / speed
-    return vx, vy
+    return cap_norm(kp * (goal_x - x), kp * (goal_y - y), max_speed)
 
 
 def visual_servo(ball_x, ball_radius, width, target_radius_ratio=0.25,
@@ -92,3 +75,21 @@ def visual_servo(ball_x, ball_radius, width, target_radius_ratio=0.25,
     radius_error = ball_radius / width - target_radius_ratio
     return Command(clamp(-k_linear * radius_error, max_linear),
                    clamp(-k_angular * offset, max_angular))
+
+
+class BallFollower(object):
+    """The visual servo on detections: a ball in, a command out; with no ball
+    it turns in place to search, as the original did."""
+
+    def __init__(self, target_radius_ratio=0.3, max_linear=0.8, max_angular=1.0,
+                 search_rate=0.5):
+        self.target_radius_ratio = target_radius_ratio
+        self.max_linear, self.max_angular = max_linear, max_angular
+        self.search_rate = search_rate
+
+    def command(self, ball, width):
+        """The :class:`Command` for a :class:`~exp_assignment2.vision.Ball` (or None)."""
+        if ball is None:
+            return Command(0.0, self.search_rate)
+        return visual_servo(ball.cx, ball.radius, width, self.target_radius_ratio,
+                            max_angular=self.max_angular, max_linear=self.max_linear)

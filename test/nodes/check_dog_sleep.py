@@ -1,42 +1,43 @@
 #!/usr/bin/env python3
-"""Scenario A: in SLEEP the dog goes to its kennel at (7, 7), ignoring the ball
-it starts next to, rests, and wakes up to NORMAL."""
+"""Scenario A forced to sleep: the dog goes to its kennel at (7, 7),
+ignoring the ball it starts next to, rests 14 s, and wakes up to NORMAL."""
 import math
 import unittest
 
 import rospy
 import rostest
 
-from dog_checks import DogObserver, wait_until
+from checks import DogObserver, clock, wait_until
 
-HOME = (7.0, 7.0)
+KENNEL = (7.0, 7.0)
 
 
 class TestDogSleep(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         rospy.init_node('check_dog_sleep')
+        clock()
         cls.dog = DogObserver()
 
-    def home_distance(self):
+    def kennel_distance(self):
         if self.dog.robot.msg is None:
             return float('inf')
-        x, y = self.dog.robot_xy()
-        return math.hypot(x - HOME[0], y - HOME[1])
+        x, y, _, _ = self.dog.robot.xyzyaw()
+        return math.hypot(x - KENNEL[0], y - KENNEL[1])
 
-    def test_goes_home_sleeps_and_wakes(self):
+    def test_goes_home_sleeps_14s_and_wakes(self):
         self.assertTrue(wait_until(lambda: self.dog.state() == 'SLEEP', 10.0))
-        self.assertTrue(wait_until(lambda: self.home_distance() < 0.5, 90.0),
-                        'still %.2f m from home' % self.home_distance())
+        self.assertTrue(wait_until(lambda: self.kennel_distance() < 0.15, 90.0),
+                        'still %.2f m from the kennel' % self.kennel_distance())
+        arrived = rospy.get_time()
         self.assertNotIn('PLAY', [s for _, s in self.dog.states], 'the ball is ignored')
-        arrived = rospy.Time.now()
+
         def woke():
-            return [t for t, s in self.dog.states if s == 'NORMAL' and t > arrived]
-        # with sleep_probability 1 NORMAL lasts a moment before the next SLEEP
-        self.assertTrue(wait_until(woke, 30.0))  # last 0.4 m + 14 s asleep
-        rested = (woke()[0] - arrived).to_sec()
-        rospy.loginfo('rested %.1f s at home', rested)
-        self.assertGreater(rested, 10.0)
+            return [t for t in self.dog.entered('NORMAL') if t > arrived]
+        self.assertTrue(wait_until(woke, 20.0))
+        rested = woke()[0] - arrived
+        rospy.loginfo('rested %.2f s at the kennel', rested)
+        self.assertAlmostEqual(rested, 14.0, delta=0.5)
 
 
 if __name__ == '__main__':

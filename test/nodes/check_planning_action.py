@@ -1,73 +1,93 @@
 #!/usr/bin/env python3
-"""A real SimpleActionServer and SimpleActionClient exchange PlanningAction
-goals over ROS topics: goal, feedback, result, and preemption."""
-import threading
+"""The project's two PlanningAction servers through real actionlib clients:
+the original's feedback wording, results, preemption, the ball's height from
+the goal's z, and bad goals refused with one line on /rosout each."""
+import math
+import time
 import unittest
 
 import actionlib
 import rospy
 import rostest
-from exp_assignment2.msg import PlanningAction, PlanningFeedback, PlanningGoal, PlanningResult
+from actionlib_msgs.msg import GoalStatus
+from rosgraph_msgs.msg import Log
 
+from checks import Pose, Rosout, clock, wait_until
+from exp_assignment2.msg import PlanningAction
+from exp_assignment2.planning import make_goal
 
-class EchoServer(object):
-    """Reports 'Reaching the goal' until done or preempted; echoes the pose."""
-
-    def __init__(self):
-        self.release = threading.Event()
-        self.server = actionlib.SimpleActionServer('/test_planning', PlanningAction,
-                                                   self.execute, auto_start=False)
-        self.server.start()
-
-    def execute(self, goal):
-        fb = PlanningFeedback(stat='Reaching the goal', position=goal.target_pose.pose)
-        for _ in range(1000):
-            if self.server.is_preempt_requested():
-                self.server.set_preempted()
-                return
-            self.server.publish_feedback(fb)
-            if self.release.wait(0.01):
-                break
-        self.server.publish_feedback(PlanningFeedback(stat='Target reached!'))
-        self.server.set_succeeded(PlanningResult())
+FEEDBACK = ('Fixing the yaw', 'Angle aligned', 'Reaching the goal', 'Target reached!')
 
 
 class TestPlanningAction(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         rospy.init_node('check_planning_action')
-        cls.echo = EchoServer()
-        cls.client = actionlib.SimpleActionClient('/test_planning', PlanningAction)
-        assert cls.client.wait_for_server(rospy.Duration(10))
+        clock()
+        cls.robot = actionlib.SimpleActionClient('/robot_reaching_goal', PlanningAction)
+        cls.ball = actionlib.SimpleActionClient('/reaching_goal', PlanningAction)
+        assert cls.robot.wait_for_server(rospy.Duration(60))
+        assert cls.ball.wait_for_server(rospy.Duration(60))
+        cls.robot_pose, cls.ball_pose = Pose('/robot/odom'), Pose('/ball/odom')
+        cls.rosout = Rosout()
 
-    def goal(self, x, y):
-        goal = PlanningGoal()
-        goal.target_pose.header.frame_id = 'odom'
-        goal.target_pose.pose.position.x, goal.target_pose.pose.position.y = x, y
-        return goal
+    def run_goal(self, client, goal, seconds=60.0):
+        stats = []
+        client.send_goal(goal, feedback_cb=lambda fb: stats.append(fb.stat))
+        self.assertTrue(client.wait_for_result(rospy.Duration(seconds)))
+        return client.get_state(), stats
 
-    def test_goal_feedback_result(self):
-        feedback = []
-        self.echo.release.clear()
-        self.client.send_goal(self.goal(1.5, -2.0), feedback_cb=feedback.append)
-        deadline = rospy.Time.now() + rospy.Duration(5)
-        while not feedback and rospy.Time.now() < deadline:
-            rospy.sleep(0.01)
-        self.echo.release.set()
-        self.assertTrue(self.client.wait_for_result(rospy.Duration(10)))
-        self.assertEqual(self.client.get_state(), actionlib.GoalStatus.SUCCEEDED)
-        self.assertIsInstance(self.client.get_result(), PlanningResult)
-        self.assertEqual(feedback[0].stat, 'Reaching the goal')
-        self.assertAlmostEqual(feedback[0].position.position.x, 1.5)
-        self.assertAlmostEqual(feedback[0].position.position.y, -2.0)
+    def test_robot_goal_gives_the_original_feedback_and_arrives(self):
+        state, stats = self.run_goal(self.robot, make_goal(-3.0, 5.0))
+        self.assertEqual(state, GoalStatus.SUCCEEDED)
+        self.assertEqual([s for s in FEEDBACK if s in stats], list(FEEDBACK))
+        self.assertEqual(stats[-1], 'Target reached!')
+        self.robot_pose.next()
+        x, y, _, _ = self.robot_pose.xyzyaw()
+        self.assertLess(math.hypot(x + 3.0, y - 5.0), 0.15)
 
-    def test_preemption(self):
-        self.echo.release.clear()
-        self.client.send_goal(self.goal(3.0, 3.0))
-        rospy.sleep(0.2)
-        self.client.cancel_goal()
-        self.assertTrue(self.client.wait_for_result(rospy.Duration(10)))
-        self.assertEqual(self.client.get_state(), actionlib.GoalStatus.PREEMPTED)
+    def test_ball_goal_moves_the_ball_at_the_height_of_z(self):
+        state, stats = self.run_goal(self.ball, make_goal(2.0, -3.0, 0.5))
+        self.assertEqual(state, GoalStatus.SUCCEEDED)
+        self.assertIn('Reaching the goal', stats)
+        x, y, z, _ = self.ball_pose.xyzyaw()
+        self.assertLess(math.hypot(x - 2.0, y + 3.0), 0.15)
+        self.assertAlmostEqual(z, 0.5)
+        for height in (20.0, -1.0, 0.5):
+            state, _ = self.run_goal(self.ball, make_goal(2.0, -3.0, height))
+            self.assertEqual(state, GoalStatus.SUCCEEDED)
+            self.assertAlmostEqual(self.ball_pose.next().pose.pose.position.z, height)
+
+    def test_a_goal_is_preempted_by_cancel(self):
+        self.robot.send_goal(make_goal(7.0, -7.0))
+        clock().sleep(1.0)
+        self.robot.cancel_goal()
+        self.assertTrue(self.robot.wait_for_result(rospy.Duration(10)))
+        self.assertEqual(self.robot.get_state(), GoalStatus.PREEMPTED)
+
+    def test_bad_goals_are_refused_with_a_reason_on_rosout(self):
+        nan = float('nan')
+        cases = [(self.ball, make_goal(20.0, 0.0), 'outside the arena'),
+                 (self.robot, make_goal(0.0, -9.0), 'outside the arena'),
+                 (self.robot, make_goal(nan, 1.0), 'not finite'),
+                 (self.ball, make_goal(1.0, 1.0, nan), 'not finite'),
+                 (self.ball, make_goal(1.0, 1.0, 80.0), 'may rise to')]
+        for client, goal, why in cases:
+            state, _ = self.run_goal(client, goal, 10.0)
+            self.assertEqual(state, GoalStatus.ABORTED, why)
+            self.assertIn(why, client.get_goal_status_text())
+            self.assertTrue(wait_until(lambda: self.rosout.lines(why, Log.ERROR), 5.0), why)
+            time.sleep(1.1)          # refusals are throttled to one line a wall second
+
+    def test_what_is_ignored_is_ignored_whatever_its_value(self):
+        goal = make_goal(-4.0, 6.0, float('nan'))      # z is not used by the robot server
+        goal.target_pose.pose.orientation.x = float('inf')
+        state, _ = self.run_goal(self.robot, goal)
+        self.assertEqual(state, GoalStatus.SUCCEEDED)
+        goal = make_goal(1.0, 1.0, 0.5)
+        goal.target_pose.pose.orientation.w = float('nan')
+        state, _ = self.run_goal(self.ball, goal)
+        self.assertEqual(state, GoalStatus.SUCCEEDED)
 
 
 if __name__ == '__main__':

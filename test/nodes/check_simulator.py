@@ -1,177 +1,173 @@
 #!/usr/bin/env python3
-"""The simulator does what Gazebo did: camera content, diff drive by REP 103,
-head control, reset, a clock faster than the wall, and bad commands ignored."""
+"""The simulator does what Gazebo did: camera content and intrinsics, diff
+drive by REP 103, limits, timeouts, the head, the ball's height, reset,
+pause, and a clock faster than the wall. Each test asks one question."""
 import math
-import threading
 import time
 import unittest
 
-import cv2
-import numpy as np
 import rospy
 import rostest
 from geometry_msgs.msg import Twist
-from nav_msgs.msg import Odometry
-from rosgraph_msgs.msg import Clock
-from sensor_msgs.msg import CompressedImage, JointState
+from rosgraph_msgs.msg import Log
+from sensor_msgs.msg import CameraInfo, CompressedImage, JointState
 from std_msgs.msg import Float64
-from std_srvs.srv import Empty, SetBool
+from std_srvs.srv import Empty
 
-from exp_assignment2.simulator import yaw_of
+from checks import Pose, Rosout, Watch, clock, wait_for_subscribers, wait_until
+from exp_assignment2.vision import BallDetector, decode_jpeg
 
 SPAWN = (-5.0, 7.0, math.pi)
 
 
-def green_pixels(msg):
-    img = cv2.imdecode(np.frombuffer(msg.data, np.uint8), cv2.IMREAD_COLOR)
-    hsv = cv2.cvtColor(img, cv2.COLOR_BGR2HSV)
-    return int(np.count_nonzero(cv2.inRange(hsv, (50, 50, 20), (70, 255, 255))))
+def ball_in(msg):
+    return BallDetector().detect(decode_jpeg(msg.data))
 
 
-class Latest(object):
-    def __init__(self, topic, cls):
-        self.msg, self.event = None, threading.Event()
-        rospy.Subscriber(topic, cls, self._cb, queue_size=1)
-
-    def _cb(self, msg):
-        self.msg = msg
-        self.event.set()
-
-    def after(self, stamp, timeout=10.0):
-        """The first message stamped after ``stamp`` (ROS time)."""
-        end = time.monotonic() + timeout
-        while time.monotonic() < end:
-            msg = self.msg
-            if msg is not None and msg.header.stamp > stamp:
-                return msg
-            self.event.clear()
-            self.event.wait(0.05)
-        raise AssertionError('no message after %s' % stamp.to_sec())
+def angle_diff(a, b):
+    return math.atan2(math.sin(a - b), math.cos(a - b))
 
 
 class TestSimulator(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         rospy.init_node('check_simulator')
-        for srv in ('/gazebo/reset_world', '/ball/set_visible'):
+        clock()
+        for srv in ('/gazebo/reset_world', '/gazebo/pause_physics'):
             rospy.wait_for_service(srv, timeout=30)
         cls.reset = rospy.ServiceProxy('/gazebo/reset_world', Empty)
         cls.pause = rospy.ServiceProxy('/gazebo/pause_physics', Empty)
         cls.unpause = rospy.ServiceProxy('/gazebo/unpause_physics', Empty)
-        cls.visible = rospy.ServiceProxy('/ball/set_visible', SetBool)
         cls.cmd = rospy.Publisher('/robot/cmd_vel', Twist, queue_size=1)
         cls.head = rospy.Publisher('/robot/joint_position_controller/command', Float64,
                                    queue_size=1)
-        cls.odom = Latest('/robot/odom', Odometry)
-        cls.joints = Latest('/robot/joint_states', JointState)
-        cls.image = Latest('/robot/camera1/image_raw/compressed', CompressedImage)
-        assert cls.odom.event.wait(30) and cls.image.event.wait(30)
+        cls.height = rospy.Publisher('/ball/height_controller/command', Float64, queue_size=1)
+        cls.odom, cls.ball = Pose('/robot/odom'), Pose('/ball/odom')
+        cls.joints = Watch('/robot/joint_states', JointState)
+        cls.image = Watch('/robot/camera1/image_raw/compressed', CompressedImage)
+        cls.info = Watch('/robot/camera1/camera_info', CameraInfo)
+        cls.rosout = Rosout()
+        for pub in (cls.cmd, cls.head, cls.height):
+            wait_for_subscribers(pub)
+        cls.image.next(30)
 
     def setUp(self):
         self.reset()
-        self.visible(True)
-        rospy.sleep(0.2)
+        self.odom.next()
 
     def drive(self, linear, angular, seconds):
         """Publish a command at 20 Hz of simulated time for ``seconds``."""
         twist = Twist()
         twist.linear.x, twist.angular.z = linear, angular
-        end = rospy.Time.now() + rospy.Duration(seconds)
-        while rospy.Time.now() < end:
+        end = rospy.get_time() + seconds
+        while rospy.get_time() < end:
             self.cmd.publish(twist)
-            rospy.sleep(0.05)
+            clock().sleep(0.05)
 
     def pose(self):
-        msg = self.odom.after(rospy.Time.now())
-        p, q = msg.pose.pose.position, msg.pose.pose.orientation
-        return p.x, p.y, yaw_of((q.x, q.y, q.z, q.w))
+        self.odom.next()
+        return self.odom.xyzyaw()
 
-    def test_camera_sees_the_ball_and_not_after_it_is_hidden(self):
-        facing = green_pixels(self.image.after(rospy.Time.now()))
-        self.assertGreater(facing, 1000, 'the ball at (-7, 6) should fill part of the view')
-        self.assertTrue(self.visible(False).success)
-        hidden = green_pixels(self.image.after(rospy.Time.now() + rospy.Duration(0.1)))
-        self.assertEqual(hidden, 0)
-        self.visible(True)
-        shown = green_pixels(self.image.after(rospy.Time.now() + rospy.Duration(0.1)))
-        self.assertGreater(shown, 1000)
+    def test_camera_sees_the_ball_in_front(self):
+        ball = ball_in(self.image.next())
+        self.assertIsNotNone(ball, 'the ball at (-7, 6) is in front of the robot at spawn')
+        self.assertGreater(ball.radius, 50)
+
+    def test_a_ball_under_the_ground_or_20_m_up_is_not_seen(self):
+        for z in (-1.0, 20.0):
+            self.height.publish(Float64(z))
+            self.assertTrue(wait_until(lambda: abs(self.ball.msg.pose.pose.position.z - z)
+                                       < 1e-6, 5.0))
+            self.assertIsNone(ball_in(self.image.next()), 'ball at z = %g' % z)
+        self.height.publish(Float64(0.5))
+        self.assertTrue(wait_until(lambda: self.ball.msg.pose.pose.position.z == 0.5, 5.0))
+        self.assertIsNotNone(ball_in(self.image.next()))
+
+    def test_camera_info_is_an_800_px_pinhole_with_80_degrees(self):
+        info = self.info.next()
+        self.assertEqual((info.width, info.height), (800, 800))
+        self.assertAlmostEqual(info.K[0], 800 / (2 * math.tan(math.radians(40))), places=6)
+        self.assertEqual((info.K[2], info.K[5]), (400.0, 400.0))
+        self.assertEqual(info.header.frame_id, 'camera_link')
 
     def test_positive_angular_z_turns_counter_clockwise(self):
-        _, _, yaw0 = self.pose()
+        yaw0 = self.pose()[3]
         self.drive(0.0, 0.5, 1.0)
-        _, _, yaw1 = self.pose()
-        turned = math.atan2(math.sin(yaw1 - yaw0), math.cos(yaw1 - yaw0))
-        self.assertGreater(turned, 0.25)
+        self.assertGreater(angle_diff(self.pose()[3], yaw0), 0.25)
 
     def test_forward_command_moves_along_the_heading(self):
-        x0, y0, yaw0 = self.pose()
+        x0, y0, _, yaw0 = self.pose()
         self.drive(0.4, 0.0, 2.0)
-        x1, y1, _ = self.pose()
+        x1, y1, _, _ = self.pose()
         along = (x1 - x0) * math.cos(yaw0) + (y1 - y0) * math.sin(yaw0)
         across = -(x1 - x0) * math.sin(yaw0) + (y1 - y0) * math.cos(yaw0)
         self.assertGreater(along, 0.5)
         self.assertLess(abs(across), 0.1)
-        twist = self.odom.msg.twist.twist
-        self.assertGreater(twist.linear.x, 0.3, 'odom twist is in the child frame')
+        self.assertGreater(self.odom.msg.twist.twist.linear.x, 0.3,
+                           'odom twist is in the child frame')
 
-    def test_stale_command_stops_the_robot(self):
+    def test_a_stale_command_stops_the_robot(self):
         self.drive(0.4, 0.0, 0.5)
-        rospy.sleep(1.5)       # no commands: the 0.5 s timeout stops the wheels
-        x0, y0, _ = self.pose()
-        rospy.sleep(1.0)
-        x1, y1, _ = self.pose()
+        clock().sleep(1.5)       # no commands: the 0.5 s timeout stops the wheels
+        x0, y0, _, _ = self.pose()
+        clock().sleep(1.0)
+        x1, y1, _, _ = self.pose()
         self.assertLess(math.hypot(x1 - x0, y1 - y0), 0.02)
 
-    def test_nan_command_is_ignored(self):
-        x0, y0, _ = self.pose()
+    def test_a_non_finite_command_is_ignored_with_a_warning(self):
+        x0, y0, _, _ = self.pose()
         twist = Twist()
-        twist.linear.x = float('nan')
-        twist.angular.z = float('inf')
+        twist.linear.x, twist.angular.z = float('nan'), float('inf')
         for _ in range(5):
             self.cmd.publish(twist)
-            rospy.sleep(0.1)
-        x1, y1, _ = self.pose()
+            clock().sleep(0.1)
+        x1, y1, _, _ = self.pose()
         self.assertLess(math.hypot(x1 - x0, y1 - y0), 0.02)
-        self.test_positive_angular_z_turns_counter_clockwise()   # still obeys
+        self.assertTrue(wait_until(lambda: self.rosout.lines('not finite', Log.WARN), 5.0))
 
-    def test_head_follows_its_command_and_is_clamped(self):
-        def head_position(after):
-            msg = self.joints.after(after)
+    def test_a_huge_command_is_clamped_to_2_m_per_s(self):
+        x0, y0, _, _ = self.pose()
+        self.drive(1.0e308, 0.0, 1.0)
+        x1, y1, z1, yaw1 = self.pose()
+        self.assertTrue(all(math.isfinite(v) for v in (x1, y1, z1, yaw1)))
+        self.assertLess(math.hypot(x1 - x0, y1 - y0), 2.0 * 1.1)
+        self.assertTrue(wait_until(lambda: self.rosout.lines('clamped', Log.WARN), 5.0))
+
+    def test_the_head_follows_its_command_and_is_clamped(self):
+        def head():
+            msg = self.joints.next()
             return msg.position[msg.name.index('head_joint')]
         self.head.publish(Float64(0.6))
-        rospy.sleep(1.5)
-        self.assertAlmostEqual(head_position(rospy.Time.now()), 0.6, delta=0.03)
+        clock().sleep(1.5)
+        self.assertAlmostEqual(head(), 0.6, delta=0.03)
         self.head.publish(Float64(3.0))
-        rospy.sleep(2.0)
-        self.assertAlmostEqual(head_position(rospy.Time.now()), math.pi / 2, delta=0.03)
+        clock().sleep(2.0)
+        self.assertAlmostEqual(head(), math.pi / 2, delta=0.03)
         self.head.publish(Float64(0.0))
-        rospy.sleep(1.5)
+        clock().sleep(1.5)
 
-    def test_reset_puts_models_back(self):
+    def test_reset_puts_the_robot_back(self):
         self.drive(0.5, 0.3, 2.0)
-        x, y, _ = self.pose()
+        x, y, _, _ = self.pose()
         self.assertGreater(math.hypot(x - SPAWN[0], y - SPAWN[1]), 0.3)
         self.reset()
-        x, y, yaw = self.pose()
+        x, y, _, yaw = self.pose()
         self.assertLess(math.hypot(x - SPAWN[0], y - SPAWN[1]), 0.02)
-        self.assertLess(abs(math.atan2(math.sin(yaw - SPAWN[2]), math.cos(yaw - SPAWN[2]))), 0.02)
+        self.assertLess(abs(angle_diff(yaw, SPAWN[2])), 0.02)
 
     def test_pause_stops_the_clock(self):
         self.pause()
         try:
-            t0 = rospy.wait_for_message('/clock', Clock, timeout=5).clock
-            time.sleep(0.3)
-            t1 = rospy.Time.now()
-            self.assertLess((t1 - t0).to_sec(), 0.05)
-        except rospy.ROSException:
-            pass   # no /clock at all while paused is also a stopped clock
+            t0 = rospy.get_time()
+            time.sleep(0.5)
+            self.assertLess(rospy.get_time() - t0, 0.05)
         finally:
             self.unpause()
 
-    def test_clock_runs_faster_than_wall_time(self):
-        t0, w0 = rospy.Time.now(), time.monotonic()
+    def test_the_clock_runs_faster_than_wall_time(self):
+        t0, w0 = rospy.get_time(), time.monotonic()
         time.sleep(2.0)
-        ratio = (rospy.Time.now() - t0).to_sec() / (time.monotonic() - w0)
+        ratio = (rospy.get_time() - t0) / (time.monotonic() - w0)
         rospy.loginfo('simulated / wall time: %.2f', ratio)
         self.assertGreater(ratio, 1.0)
 

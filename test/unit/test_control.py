@@ -3,8 +3,9 @@ import math
 
 import pytest
 
-from exp_assignment2.control import (DONE, FIX_YAW, GO_STRAIGHT, GoToPoint, normalize_angle,
+from exp_assignment2.control import (DONE, FIX_YAW, GO_STRAIGHT, BallFollower, GoToPoint,
                                      planar_velocity, visual_servo)
+from exp_assignment2.geometry import normalize_angle
 
 
 def simulate(ctrl, x, y, yaw, gx, gy, dt=0.02, steps=5000):
@@ -85,3 +86,13 @@ def test_visual_servo_matches_the_original_gains_at_800px():
                        max_angular=10, max_linear=10)
     assert cmd.angular == pytest.approx(-0.002 * 50)    # REP 103 sign
     assert cmd.linear == pytest.approx(-0.01 * (90 - 100))
+
+
+def test_ball_follower_searches_when_no_ball_and_servoes_otherwise():
+    from exp_assignment2.vision import Ball
+    follower = BallFollower(target_radius_ratio=0.3, search_rate=0.5)
+    assert follower.command(None, 800) == (0.0, 0.5)
+    right = follower.command(Ball(600, 400, 50, 600, 400), 800)
+    assert right.angular < 0 and right.linear > 0     # ball right and far: turn right, go
+    at_target = follower.command(Ball(400, 400, 240, 400, 400), 800)
+    assert at_target == (pytest.approx(0.0), pytest.approx(0.0))

@@ -1,0 +1,5 @@
+#!/usr/bin/env python3
+"""The simulator node (node name gazebo) that stands in for Gazebo."""
+from exp_assignment2.nodes.simulator import main
+
+main()

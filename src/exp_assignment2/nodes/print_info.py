@@ -1,0 +1,34 @@
+"""``print_info``: logs MiRo's state changes, commands, targets and arrivals.
+
+Only commands the grounding node accepts are echoed (it logs the refusals,
+throttled), so a flood of bad input does not flood this log either.
+"""
+import rospy
+from std_msgs.msg import Float64MultiArray, Int64MultiArray, String
+
+from exp_assignment2.grammar import CommandError, parse_motion_command, quote
+
+
+def on_command(msg):
+    try:
+        parse_motion_command(msg.data)
+    except CommandError:
+        return
+    rospy.loginfo('command: %s', msg.data.strip())
+
+
+def on_arrival(msg):
+    if len(msg.data) >= 5:
+        rospy.loginfo('arrival #%d: target (%g, %g), robot at (%.2f, %.2f)', int(msg.data[4]),
+                      *msg.data[:4])
+
+
+def main():
+    rospy.init_node('print_info')
+    rospy.Subscriber('/state', String, lambda m: rospy.loginfo('state: %s', quote(m.data)),
+                     queue_size=100)
+    rospy.Subscriber('/command', String, on_command, queue_size=100)
+    rospy.Subscriber('/target_pos', Int64MultiArray, lambda m: rospy.loginfo(
+        'target: (%s)', ', '.join(str(v) for v in m.data[:2])), queue_size=100)
+    rospy.Subscriber('/arrival', Float64MultiArray, on_arrival, queue_size=100)
+    rospy.spin()

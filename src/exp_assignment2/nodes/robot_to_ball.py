@@ -1,0 +1,24 @@
+"""``robot_to_ball``: the original's stand-alone ball follower: the visual
+servo on every camera frame, turning in place while the ball is not seen.
+
+Parameters: ``~target_radius_ratio``, ``~max_linear``, ``~max_angular``,
+``~search_rate``, ``~min_radius_at_800``, ``~gui``.
+"""
+import rospy
+
+from exp_assignment2.control import BallFollower
+from exp_assignment2.ros.clock import RosClock
+from exp_assignment2.ros.dog import CommandPublisher, RosDogEyes, turn_sign
+
+
+def main():
+    rospy.init_node('robot_to_ball')
+    follower = BallFollower(float(rospy.get_param('~target_radius_ratio', 0.3)),
+                            float(rospy.get_param('~max_linear', 0.8)),
+                            float(rospy.get_param('~max_angular', 1.0)),
+                            float(rospy.get_param('~search_rate', 0.5)))
+    wheels = CommandPublisher(turn_sign())
+    eyes = RosDogEyes(RosClock(), float(rospy.get_param('~min_radius_at_800', 10.0)),
+                      gui=bool(rospy.get_param('~gui', False)))
+    eyes.follow(lambda ball, width: wheels.drive(*follower.command(ball, width)))
+    rospy.spin()

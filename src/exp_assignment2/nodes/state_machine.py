@@ -1,0 +1,44 @@
+"""``state_machine``: the dog's behaviour (NORMAL, SLEEP, PLAY) on ROS.
+
+Parameters: ``~seed`` and every number of
+:class:`~exp_assignment2.behaviour.dog.DogParams` (``config/dog.yaml``),
+``~min_radius_at_800``, ``~gui``. Publishes the active state on
+``/robot/state`` (latched) and in the ``/state`` parameter.
+"""
+import random
+
+import rospy
+from std_msgs.msg import String
+
+from exp_assignment2.behaviour.dog import Dog, DogParams, build_state_machine
+from exp_assignment2.ros.actions import PlanningClient
+from exp_assignment2.ros.clock import RosClock
+from exp_assignment2.ros.dog import RosDogBody, RosDogEyes, turn_sign
+from exp_assignment2.ros.log import RosLog
+from exp_assignment2.smach_api import report_active_state
+
+
+def main():
+    rospy.init_node('state_machine')
+    try:
+        params = DogParams(lambda key, default: rospy.get_param('~' + key, default))
+    except ValueError as exc:
+        rospy.logfatal('state_machine: %s', exc)
+        raise SystemExit(1)
+    clock = RosClock()
+    eyes = RosDogEyes(clock, float(rospy.get_param('~min_radius_at_800', 10.0)),
+                      gui=bool(rospy.get_param('~gui', False)))
+    robot = PlanningClient('/robot_reaching_goal', clock)
+    if not robot.wait_for_server():
+        return
+    body = RosDogBody(turn_sign(), robot)
+    dog = Dog(clock, body, eyes, params, random.Random(rospy.get_param('~seed', 0)), RosLog())
+    state_pub = rospy.Publisher('/robot/state', String, queue_size=1, latch=True)
+
+    def report(label):
+        rospy.loginfo('state: %s', label)
+        rospy.set_param('/state', label)
+        state_pub.publish(String(label))
+    sm = build_state_machine(dog)
+    report_active_state(sm, report)
+    sm.execute()

@@ -1,0 +1,65 @@
+"""Sending PlanningAction goals with one goal handle per goal.
+
+actionlib's SimpleActionClient tracks one goal at a time: a goal sent while
+another is still finishing makes it log "Got a transition callback on a goal
+handle that we're not tracking", and a hurried cancel "received DONE twice".
+Each :class:`ActionGoal` here keeps its own handle of a plain ActionClient, so
+every goal's transitions go to the object that waits for it.
+"""
+import actionlib
+import rospy
+from actionlib_msgs.msg import GoalStatus
+
+from exp_assignment2.msg import PlanningAction
+from exp_assignment2.planning import make_goal
+
+
+class ActionGoal(object):
+    """A goal under way (:class:`~exp_assignment2.behaviour.interfaces.Goal`);
+    its end notifies the clock."""
+
+    def __init__(self, client, goal, clock):
+        self.clock, self.status, self.text = clock, None, ''
+        self.handle = client.send_goal(goal, transition_cb=self._on_transition)
+
+    def _on_transition(self, handle):
+        if handle.get_comm_state() == actionlib.CommState.DONE and self.status is None:
+            self.status = handle.get_goal_status()
+            self.text = handle.get_goal_status_text()
+            self.clock.notify()
+
+    def done(self):
+        return self.status is not None
+
+    def succeeded(self):
+        return self.status == GoalStatus.SUCCEEDED
+
+    def cancel(self):
+        if self.status is None:
+            self.handle.cancel()
+
+
+class PlanningClient(object):
+    """A client of one of the PlanningAction servers."""
+
+    def __init__(self, name, clock):
+        self.name, self.clock = name, clock
+        self.client = actionlib.ActionClient(name, PlanningAction)
+
+    def wait_for_server(self, warn_every=30.0):
+        """Wait until the server is up, however long it takes (the node has
+        nothing to do without it); a warning every ``warn_every`` s of ROS
+        time. Deadlines are computed only once ROS time runs. False on shutdown."""
+        if not self.clock.wait_for_time():
+            return False
+        while not rospy.is_shutdown():
+            if self.client.wait_for_server(rospy.Duration(warn_every)):
+                return True
+            if not rospy.is_shutdown():
+                rospy.logwarn('%s: no %s action server yet; still waiting',
+                              rospy.get_name(), self.name)
+        return False
+
+    def go_to(self, x, y, z=0.0):
+        """Send a goal; returns its :class:`ActionGoal`."""
+        return ActionGoal(self.client, make_goal(x, y, z, stamp=rospy.Time.now()), self.clock)

@@ -1,0 +1,158 @@
+"""MiRo over ROS (scenario B): the manager's body, the person's words and
+gestures, and the omnidirectional motion controller.
+
+The manager publishes ``/command``; ``geometry_grounding`` answers on
+``/target_pos`` (Int64MultiArray ``[x, y]`` whose one dimension's label is
+the command it grounds, so an answer is matched to its order); the motion
+controller drives there and announces ``/arrival`` ([target_x, target_y, x,
+y, number]). It alone writes the original's ``/arrived`` and ``/all``
+parameters.
+"""
+import math
+import threading
+
+import rospy
+from geometry_msgs.msg import Twist
+from nav_msgs.msg import Odometry
+from std_msgs.msg import Float64MultiArray, Int64MultiArray, String
+
+from exp_assignment2 import grid
+from exp_assignment2.control import planar_velocity
+from exp_assignment2.grammar import parse_voice, quote
+from exp_assignment2.msg import Gesture
+from exp_assignment2.refusal import parse_or_refuse
+
+ACK_TIMEOUT = 1.0   # s of ROS time for the grounding node to answer an order
+
+
+class MiroGoal(object):
+    """One order: acknowledged by its ``/target_pos``, done at its ``/arrival``
+    or when a later order replaces it."""
+
+    def __init__(self, command):
+        self.command, self.target, self.state = command, None, 'sent'
+
+    def done(self):
+        return self.state in ('arrived', 'abandoned')
+
+    def succeeded(self):
+        return self.state == 'arrived'
+
+    def cancel(self):
+        if not self.done():
+            self.state = 'abandoned'
+
+
+class RosMiroBody(object):
+    """:class:`~exp_assignment2.behaviour.interfaces.MiroBody` over ROS."""
+
+    def __init__(self, clock):
+        self.clock, self.goal = clock, None
+        self.lock = threading.Lock()
+        self.pub = rospy.Publisher('/command', String, queue_size=10)
+        rospy.Subscriber('/target_pos', Int64MultiArray, self._on_target, queue_size=10)
+        rospy.Subscriber('/arrival', Float64MultiArray, self._on_arrival, queue_size=10)
+
+    def go(self, command):
+        """Publish ``command`` until grounded (an order sent before the
+        grounding node listens would be lost); returns its :class:`MiroGoal`."""
+        goal = MiroGoal(command)
+        with self.lock:
+            if self.goal is not None:
+                self.goal.cancel()
+            self.goal = goal
+        while not self.clock.is_shutdown():
+            self.pub.publish(String(command))
+            if self.clock.wait_until(lambda: goal.target is not None, ACK_TIMEOUT):
+                break
+            rospy.logwarn_throttle(10.0, '%r: no answer on /target_pos yet; sending again'
+                                   % command)
+        return goal
+
+    def _on_target(self, msg):
+        label = msg.layout.dim[0].label if msg.layout.dim else None
+        with self.lock:
+            goal = self.goal
+            if goal is None or goal.target is not None or label != goal.command:
+                return
+            goal.target, goal.state = tuple(msg.data[:2]), 'moving'
+        self.clock.notify()
+
+    def _on_arrival(self, msg):
+        with self.lock:
+            goal = self.goal
+            if goal is None or goal.state != 'moving' or tuple(msg.data[:2]) != goal.target:
+                return
+            goal.state = 'arrived'
+        self.clock.notify()
+
+
+def listen(ears, person, refuse):
+    """Feed ``/voice`` to the ears and ``/gesture`` to the person; ``refuse(topic)``
+    gives the refusal log of a topic."""
+    voice_refusal, gesture_refusal = refuse('/voice'), refuse('/gesture')
+
+    def on_voice(msg):
+        cmd = parse_or_refuse(parse_voice, msg.data, voice_refusal)
+        if cmd is not None:
+            rospy.loginfo('/voice: the person says %s', quote(msg.data.strip()))
+            ears.hear(cmd, msg.data.strip())
+
+    def on_gesture(msg):
+        if not (grid.on_grid(msg.person_x, msg.person_y)
+                and grid.on_grid(msg.point_x, msg.point_y)):
+            gesture_refusal('person (%d, %d) pointing at (%d, %d) is off the grid [%d, %d]; '
+                            'ignored' % (msg.person_x, msg.person_y, msg.point_x, msg.point_y,
+                                         grid.GRID_MIN, grid.GRID_MAX))
+            return
+        rospy.loginfo('/gesture: the person at (%d, %d) points at (%d, %d)', msg.person_x,
+                      msg.person_y, msg.point_x, msg.point_y)
+        person.saw_gesture((msg.person_x, msg.person_y), (msg.point_x, msg.point_y))
+    rospy.Subscriber('/voice', String, on_voice, queue_size=100)
+    rospy.Subscriber('/gesture', Gesture, on_gesture, queue_size=100)
+
+
+class OmniMotionController(object):
+    """Drives the omnidirectional MiRo to ``/target_pos`` at ``rate`` Hz of ROS
+    time; a new target replaces the old one at once. On arrival (within
+    ``tolerance``) it stops, publishes ``/arrival`` and sets ``/all`` and
+    ``/arrived`` (0 while moving, 1 once there), the original's parameters."""
+
+    def __init__(self, kp=1.0, max_speed=1.0, tolerance=0.05, rate=20.0):
+        self.kp, self.max_speed, self.tolerance = kp, max_speed, tolerance
+        self.target, self.pose, self.number = None, None, 1
+        self.cmd_pub = rospy.Publisher('/cmd_vel', Twist, queue_size=1)
+        self.arrival_pub = rospy.Publisher('/arrival', Float64MultiArray, queue_size=10)
+        rospy.set_param('/arrived', 1)
+        rospy.Subscriber('/odom', Odometry, self._on_odom, queue_size=1)
+        rospy.Subscriber('/target_pos', Int64MultiArray, self._on_target, queue_size=10)
+        rospy.Timer(rospy.Duration(1.0 / rate), self._tick)
+
+    def _on_odom(self, msg):
+        self.pose = msg.pose.pose.position
+
+    def _on_target(self, msg):
+        if len(msg.data) != 2 or not grid.on_grid(msg.data[0], msg.data[1]):
+            rospy.logerr_throttle(1.0, '/target_pos: %s is not a grid point [x, y] in [%d, %d]; '
+                                  'ignored' % (list(msg.data)[:4], grid.GRID_MIN, grid.GRID_MAX))
+            return
+        self.target = (msg.data[0], msg.data[1])
+        rospy.set_param('/arrived', 0)
+
+    def _tick(self, _event):
+        target, pose = self.target, self.pose
+        if target is None or pose is None:
+            return
+        if math.hypot(target[0] - pose.x, target[1] - pose.y) <= self.tolerance:
+            self.target = None
+            self.cmd_pub.publish(Twist())
+            report = [float(target[0]), float(target[1]), pose.x, pose.y, float(self.number)]
+            rospy.set_param('/all', report)
+            rospy.set_param('/arrived', 1)
+            self.arrival_pub.publish(Float64MultiArray(data=report))
+            self.number += 1
+            return
+        twist = Twist()
+        twist.linear.x, twist.linear.y = planar_velocity(pose.x, pose.y, target[0], target[1],
+                                                         self.kp, self.max_speed)
+        self.cmd_pub.publish(twist)

@@ -1,0 +1,178 @@
+"""The PlanningAction servers' ROS side: goals in, velocity commands out.
+
+One control step per odometry message (an event, not a timer); a wait for
+the next one also ends on preemption or shutdown, and on ``odom_timeout`` s of
+silence. Goals are checked by :func:`exp_assignment2.planning.goal_error`
+(refusals logged through a throttled :class:`~exp_assignment2.refusal.RefusalLog`),
+aborted with the reason as the status text.
+"""
+import threading
+
+import actionlib
+import rospy
+from geometry_msgs.msg import Twist
+from nav_msgs.msg import Odometry
+from std_msgs.msg import Float64
+
+from exp_assignment2.geometry import yaw_of
+from exp_assignment2.msg import PlanningAction, PlanningFeedback, PlanningResult
+from exp_assignment2.planning import REACHED, goal_error
+from exp_assignment2.ros.log import refusal_log
+
+
+class OdomWatch(object):
+    """The latest pose of an Odometry topic; each message notifies the clock."""
+
+    def __init__(self, topic, clock):
+        self.clock, self.pose, self.count = clock, None, 0
+        self.lock = threading.Lock()
+        rospy.Subscriber(topic, Odometry, self._on_odom, queue_size=1)
+
+    def _on_odom(self, msg):
+        with self.lock:
+            self.pose, self.count = msg.pose.pose, self.count + 1
+        self.clock.notify()
+
+    def latest(self):
+        with self.lock:
+            return self.pose, self.count
+
+
+class PlanningServer(object):
+    """A SimpleActionServer driving one body; subclasses give the control step.
+
+    :param uses_z: the goal's z is used (the ball's height) and so checked
+    """
+
+    def __init__(self, name, odom_topic, cmd_topic, clock, uses_z=False):
+        self.name, self.clock, self.uses_z = name, clock, uses_z
+        self.goal_timeout = float(rospy.get_param('~goal_timeout', 120.0))
+        self.odom_timeout = float(rospy.get_param('~odom_timeout', 2.0))
+        self.odom, self.odom_topic = OdomWatch(odom_topic, clock), odom_topic
+        self.cmd_pub = rospy.Publisher(cmd_topic, Twist, queue_size=1)
+        self.refuse = refusal_log(name)
+        self.server = actionlib.SimpleActionServer(name, PlanningAction, self.execute,
+                                                   auto_start=False)
+        self.server.register_preempt_callback(clock.notify)
+        self.server.start()
+        rospy.loginfo('%s: ready', name)
+
+    def feedback(self, text, pose):
+        self.server.publish_feedback(PlanningFeedback(stat=text, position=pose))
+
+    def stop(self):
+        self.cmd_pub.publish(Twist())
+
+    def _abort(self, text, log=rospy.logwarn):
+        self.stop()
+        log('%s: aborted: %s', self.name, text)
+        self.server.set_aborted(PlanningResult(), text)
+
+    def execute(self, goal):
+        target = goal.target_pose.pose.position
+        error = goal_error(target.x, target.y, target.z if self.uses_z else None)
+        if error:
+            self.refuse('rejected: %s' % error)
+            self.server.set_aborted(PlanningResult(), error)
+            return
+        if not self.clock.wait_until(lambda: self.odom.latest()[0] is not None, 10.0):
+            self._abort('no odometry on %s' % self.odom_topic, rospy.logerr)
+            return
+        if not self.begin(target):
+            return
+        deadline = self.clock.now() + self.goal_timeout
+        while True:
+            _, count = self.odom.latest()
+            fresh = self.clock.wait_until(
+                lambda: self.odom.latest()[1] != count or self.server.is_preempt_requested(),
+                self.odom_timeout)
+            if self.clock.is_shutdown():
+                self.stop()
+                self.server.set_aborted(PlanningResult(), 'the server is shutting down')
+                return
+            if self.server.is_preempt_requested():
+                self.stop()
+                self.server.set_preempted(PlanningResult(), 'preempted')
+                return
+            if not fresh:
+                self._abort('no odometry for %.1f s' % self.odom_timeout, rospy.logerr)
+                return
+            if self.clock.now() > deadline:
+                self._abort('goal not reached within %.0f s' % self.goal_timeout)
+                return
+            pose, _ = self.odom.latest()
+            if self.control(pose, target):
+                self.stop()
+                self.feedback(REACHED, pose)
+                self.server.set_succeeded(PlanningResult(), REACHED)
+                return
+
+    def begin(self, target):
+        """Prepare a goal; False when it was already answered."""
+        return True
+
+    def control(self, pose, target):
+        """Publish one velocity command; True when the target is reached."""
+        raise NotImplementedError
+
+
+class RobotPlanningServer(PlanningServer):
+    """``/robot_reaching_goal``: turn towards the goal, then drive (z ignored)."""
+
+    def __init__(self, controller, clock, sign):
+        self.controller, self.sign = controller, sign
+        PlanningServer.__init__(self, '/robot_reaching_goal', '/robot/odom', '/robot/cmd_vel',
+                                clock)
+
+    def begin(self, target):
+        self.controller.begin()
+        return True
+
+    def control(self, pose, target):
+        q = pose.orientation
+        (linear, angular), texts, done = self.controller.step(
+            pose.position.x, pose.position.y, yaw_of((q.x, q.y, q.z, q.w)), target.x, target.y)
+        if done:
+            return True
+        for text in texts:
+            self.feedback(text, pose)
+        twist = Twist()
+        twist.linear.x, twist.angular.z = linear, self.sign * angular
+        self.cmd_pub.publish(twist)
+        return False
+
+
+class BallPlanningServer(PlanningServer):
+    """``/reaching_goal``: the goal's z becomes the ball's height (below 0:
+    under the ground, as the original's set_link_state did), then the ball
+    moves to (x, y)."""
+
+    HEIGHT_TOPIC = '/ball/height_controller/command'
+
+    def __init__(self, controller, clock):
+        self.controller = controller
+        self.height_pub = rospy.Publisher(self.HEIGHT_TOPIC, Float64, queue_size=1, latch=True)
+        PlanningServer.__init__(self, '/reaching_goal', '/ball/odom', '/ball/cmd_vel', clock,
+                                uses_z=True)
+
+    def begin(self, target):
+        self.height_pub.publish(Float64(target.z))
+        at_height = self.clock.wait_until(
+            lambda: abs(self.odom.latest()[0].position.z - target.z) < 1e-3
+            or self.server.is_preempt_requested(), 2.0)
+        if not at_height and not self.server.is_preempt_requested():
+            self._abort('the ball did not reach height %.2f' % target.z, rospy.logerr)
+            return False
+        return True
+
+    def control(self, pose, target):
+        (vx, vy), texts, done = self.controller.step(pose.position.x, pose.position.y,
+                                                     target.x, target.y)
+        if done:
+            return True
+        for text in texts:
+            self.feedback(text, pose)
+        twist = Twist()
+        twist.linear.x, twist.linear.y = vx, vy
+        self.cmd_pub.publish(twist)
+        return False

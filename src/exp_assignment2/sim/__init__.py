@@ -1,0 +1,1 @@
+"""The simulator that stands in for Gazebo; the only package that imports pybullet."""

@@ -1,0 +1,160 @@
+"""The simulator's own camera renderer: URDF visuals drawn with OpenGL (moderngl).
+
+It draws the scene pybullet's ``getCameraImage`` draws, in a few milliseconds
+on Mesa's llvmpipe (headless EGL), split along pybullet's threading rule:
+
+* :class:`BulletSceneReader` lives in the simulator's thread (pybullet is not
+  thread-safe). Built once from a pybullet client and the loaded bodies, it
+  turns their URDF visuals into a :class:`SceneDescription` (plain numpy
+  data); per frame :meth:`~BulletSceneReader.read_poses` returns every link's
+  world frame as one new ``(n_slots, 4, 4)`` float32 array (one batched
+  pybullet query per body), which may be handed to another thread.
+* :class:`GLRenderer` (:mod:`.gl_renderer`, re-exported here with
+  :func:`view_projection`) owns an OpenGL context bound to the thread that
+  constructs it: create it, render with it and close it in that one thread
+  (e.g. a render worker).
+
+This module holds the first half; the second is :mod:`.gl_renderer` (drawing,
+camera convention) on :mod:`.gl_context` (the EGL context). The geometry comes
+from :mod:`.urdf_shapes` (URDF parsing) and :mod:`.gl_meshes` (triangles).
+"""
+from collections import namedtuple
+
+import numpy as np
+
+from .gl_meshes import indexed, visual_vertices
+from .gl_renderer import GLRenderer, view_projection
+from .urdf_shapes import parse_urdf, pose_matrix, quaternion_matrices
+
+__all__ = ['BulletSceneReader', 'GLRenderer', 'SceneDescription', 'SceneModel',
+           'view_projection']
+
+SceneModel = namedtuple('SceneModel', 'body_id urdf grid name')
+SceneModel.__doc__ = """A loaded body to draw: pybullet unique id, its URDF path,
+whether its base link gets the 1 m floor grid, and a name (for ``hidden``)."""
+
+
+class SceneDescription(object):
+    """What to draw, as plain numpy data (no pybullet, no GL; read-only once built).
+
+    ``vertices``: (n, 9) float32 rows (:data:`.gl_meshes.VERTEX_FORMAT`) in
+    their link's frame; ``indices``: uint32 triangle corners; ``draws``: (slot,
+    first index, index count, cull back faces, grid) per group, grid floors
+    last; ``slots``: (model name, link name) per pose slot; ``model_names``,
+    ``body_ids`` and ``model_slots`` (slot range start, stop) per model.
+    """
+
+    def __init__(self, vertices, indices, draws, slots, model_names, body_ids, model_slots):
+        self.vertices, self.indices, self.draws = vertices, indices, draws
+        self.slots, self.model_names = slots, model_names
+        self.body_ids, self.model_slots = body_ids, model_slots
+        self._index = {s: i for i, s in enumerate(slots)}
+
+    @property
+    def n_slots(self):
+        """Number of pose slots (every link of every model, bases included)."""
+        return len(self.slots)
+
+    def slot(self, model, link):
+        """Pose slot of link ``link`` of model ``model`` (KeyError if unknown)."""
+        return self._index[(model, link)]
+
+    def link_pose(self, poses, model, link):
+        """4x4 world frame of a link in a :meth:`BulletSceneReader.read_poses`
+        snapshot, e.g. the camera's: ``link_pose(poses, 'robot', 'camera_link')``."""
+        return poses[self.slot(model, link)].astype(float)
+
+    def hidden_slots(self, hidden):
+        """Set of the slots of the models in ``hidden`` (names or body ids)."""
+        out = set()
+        for h in hidden:
+            k = self.model_names.index(h) if h in self.model_names else self.body_ids.index(h)
+            out.update(range(*self.model_slots[k]))
+        return out
+
+
+class BulletSceneReader(object):
+    """The simulator-thread half: URDF visuals and batched pose reads from pybullet.
+
+    :param models: iterable of :class:`SceneModel` (or equal tuples)
+    :param client: pybullet physics client id
+    Construct it and call :meth:`read_poses` in the thread that owns the client.
+    """
+
+    def __init__(self, models, client=0):
+        import pybullet as p   # here, so that the GL half imports without pybullet
+        self._p, self.client = p, client
+        self._bodies = []      # (body id, link indices)
+        groups, slots, names, ids, ranges, inv_inertial = {}, [], [], [], [], []
+        for body_id, urdf, grid, name in (SceneModel(*m) for m in models):
+            urdf_model = parse_urdf(urdf)
+            first, n_links = len(slots), p.getNumJoints(body_id, physicsClientId=client)
+            index = {p.getBodyInfo(body_id, physicsClientId=client)[0].decode(): -1}
+            for j in range(n_links):
+                index[p.getJointInfo(body_id, j, physicsClientId=client)[12].decode()] = j
+            by_index = {v: k for k, v in index.items()}
+            slots += [(name, by_index[j]) for j in range(-1, n_links)]
+            parent = {j.child: j for j in urdf_model.joints}
+            for link, visuals in urdf_model.visuals.items():
+                # A link pybullet merged away (URDF_MERGE_FIXED_LINKS) rides on
+                # its nearest kept ancestor through the fixed joints between.
+                frame, at = np.eye(4), link
+                while at not in index and at in parent:
+                    frame, at = parent[at].origin.dot(frame), parent[at].parent
+                if at not in index:
+                    raise ValueError('%s: link %s is not in pybullet body %d'
+                                     % (urdf, link, body_id))
+                # The grid goes where the simulator put pybullet's grid
+                # texture: on the base link of a grid model.
+                is_grid = bool(grid) and index[at] == -1
+                for v in visuals:
+                    rows = visual_vertices(v, frame)
+                    if rows is not None:
+                        # primitives are closed and wound outwards: cull their
+                        # back faces (halves llvmpipe's work); meshes may not be
+                        key = (is_grid, first + index[at] + 1, v.kind != 'mesh')
+                        groups.setdefault(key, []).append(rows)
+            # getBasePositionAndOrientation gives the base's inertial frame; the
+            # URDF base frame is that times the inverse local inertial frame.
+            info = p.getDynamicsInfo(body_id, -1, physicsClientId=client)
+            inv_inertial.append(np.linalg.inv(pose_matrix(info[3], info[4])))
+            names.append(name)
+            ids.append(body_id)
+            ranges.append((first, len(slots)))
+            self._bodies.append((body_id, list(range(n_links))))
+        # Grid floors last: early depth test then skips their costly fragments
+        # wherever something stands in front of them.
+        vertices, indices, draws, n_vertices, n_indices = [], [], [], 0, 0
+        for is_grid, slot, cull in sorted(groups):
+            rows, idx = indexed(np.concatenate(groups[(is_grid, slot, cull)]))
+            vertices.append(rows)
+            indices.append(idx + n_vertices)
+            draws.append((slot, n_indices, len(idx), cull, is_grid))
+            n_vertices, n_indices = n_vertices + len(rows), n_indices + len(idx)
+        self.description = SceneDescription(
+            np.concatenate(vertices) if vertices else np.zeros((0, 9), np.float32),
+            np.concatenate(indices) if indices else np.zeros(0, np.uint32),
+            draws, slots, names, ids, ranges)
+        self._inv_inertial = np.array(inv_inertial)
+        self._base_slots = np.array([r[0] for r in ranges], int)
+
+    def read_poses(self):
+        """World frames of every slot: a new (n_slots, 4, 4) float32 array (safe
+        to hand to another thread); one base + one getLinkStates query per body."""
+        p, c = self._p, self.client
+        pos, quat = [], []
+        for body_id, links in self._bodies:
+            base = p.getBasePositionAndOrientation(body_id, physicsClientId=c)
+            pos.append(base[0])
+            quat.append(base[1])
+            if links:
+                for s in p.getLinkStates(body_id, links, computeForwardKinematics=1,
+                                         physicsClientId=c):
+                    pos.append(s[4])   # the URDF link frame, not the inertial one
+                    quat.append(s[5])
+        m = np.zeros((len(pos), 4, 4))
+        m[:, :3, :3] = quaternion_matrices(quat)
+        m[:, :3, 3] = pos
+        m[:, 3, 3] = 1.0
+        m[self._base_slots] = np.matmul(m[self._base_slots], self._inv_inertial)
+        return m.astype(np.float32)

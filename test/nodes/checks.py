@@ -1,0 +1,145 @@
+"""What the rostest checker nodes share (not a test by itself).
+
+Waits are events: each subscriber notifies a :class:`RosClock` and a check
+waits on it with a deadline in ROS time (the simulator's), so nothing polls;
+the .test file's time-limit bounds every run in wall time.
+"""
+import math
+import os
+import signal
+import threading
+import xmlrpc.client
+
+import rosgraph
+import rospy
+from nav_msgs.msg import Odometry
+from rosgraph_msgs.msg import Log
+from sensor_msgs.msg import JointState
+from std_msgs.msg import String
+
+from exp_assignment2.geometry import yaw_of
+from exp_assignment2.ros.clock import RosClock
+
+_clock = None
+
+
+def clock():
+    """The checker's clock (one per process, after rospy.init_node)."""
+    global _clock
+    if _clock is None:
+        _clock = RosClock()
+    return _clock
+
+
+def wait_until(predicate, ros_seconds):
+    """True once ``predicate()`` holds, False after ``ros_seconds`` of ROS time
+    (counted once ROS time runs)."""
+    clock().wait_for_time()
+    return clock().wait_until(predicate, ros_seconds)
+
+
+class Watch(object):
+    """The latest message of a topic (and, with ``keep``, all of them)."""
+
+    def __init__(self, topic, cls, keep=False):
+        self.msg, self.count, self.all = None, 0, [] if keep else None
+        self.lock = threading.Lock()
+        rospy.Subscriber(topic, cls, self._cb, queue_size=100)
+
+    def _cb(self, msg):
+        with self.lock:
+            self.msg, self.count = msg, self.count + 1
+            if self.all is not None:
+                self.all.append(msg)
+        clock().notify()
+        self.on_message(msg)
+
+    def on_message(self, msg):
+        pass
+
+    def next(self, ros_seconds=10.0):
+        """The first message after now."""
+        count = self.count
+        assert wait_until(lambda: self.count > count, ros_seconds), 'no message in %.0f s' % (
+            ros_seconds)
+        return self.msg
+
+
+class Rosout(Watch):
+    """Every log line of every node, from /rosout."""
+
+    def __init__(self):
+        Watch.__init__(self, '/rosout', Log, keep=True)
+
+    def lines(self, text='', level=None, node=None):
+        with self.lock:
+            return [m for m in self.all if text in m.msg and (level is None or m.level == level)
+                    and (node is None or m.name == node)]
+
+
+class Pose(Watch):
+    """An Odometry topic as (x, y, z, yaw)."""
+
+    def __init__(self, topic):
+        Watch.__init__(self, topic, Odometry)
+
+    def xyzyaw(self):
+        p, q = self.msg.pose.pose.position, self.msg.pose.pose.orientation
+        return p.x, p.y, p.z, yaw_of((q.x, q.y, q.z, q.w))
+
+
+def wait_for_subscribers(pub, ros_seconds=30.0):
+    """True once ``pub`` has a subscriber (bounded)."""
+    ok = wait_until(lambda: pub.get_num_connections() > 0, ros_seconds)
+    assert ok, 'nobody subscribes to %s' % pub.resolved_name
+    return ok
+
+
+class DogObserver(object):
+    """Everything a scenario-A checker looks at: states, poses, head."""
+
+    def __init__(self):
+        self.states, self.head_positions = [], []      # (ros time, label); rad
+        self.robot, self.ball = Pose('/robot/odom'), Pose('/ball/odom')
+        rospy.Subscriber('/robot/state', String, self._on_state, queue_size=10)
+        rospy.Subscriber('/robot/joint_states', JointState, self._on_joints, queue_size=50)
+
+    def _on_state(self, msg):
+        self.states.append((rospy.get_time(), msg.data))
+        clock().notify()
+
+    def _on_joints(self, msg):
+        if 'head_joint' in msg.name:
+            self.head_positions.append(msg.position[msg.name.index('head_joint')])
+
+    def state(self):
+        return self.states[-1][1] if self.states else None
+
+    def entered(self, label):
+        return [t for t, s in self.states if s == label]
+
+    def ball_distance(self):
+        if self.robot.msg is None or self.ball.msg is None:
+            return float('inf')
+        r, b = self.robot.xyzyaw(), self.ball.xyzyaw()
+        return math.hypot(r[0] - b[0], r[1] - b[1])
+
+    def head_reached(self, angle, tolerance):
+        return any(abs(h - angle) <= tolerance for h in self.head_positions)
+
+
+def kill_node(name):
+    """SIGKILL a node (as a crash would); returns its pid."""
+    uri = rosgraph.Master('/checker').lookupNode(name)
+    pid = xmlrpc.client.ServerProxy(uri).getPid('/checker')[2]
+    os.kill(pid, signal.SIGKILL)
+    return pid
+
+
+def node_pid(name):
+    """The pid of a running node, or None."""
+    try:
+        uri = rosgraph.Master('/checker').lookupNode(name)
+        return xmlrpc.client.ServerProxy(uri).getPid('/checker')[2]
+    except Exception:
+        return None

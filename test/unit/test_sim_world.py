@@ -1,0 +1,116 @@
+"""The simulator's world description and pacing, offline (no ROS, no pybullet)."""
+import math
+import os
+
+import pytest
+import yaml
+
+from exp_assignment2.sim.pacing import Pacer
+from exp_assignment2.sim.world import PLUGIN_OPTIONS, parse_world
+
+CONFIG = os.path.join(os.path.dirname(__file__), '..', '..', 'config')
+
+
+def world(**model):
+    desc = dict(name='m', urdf='x.urdf')
+    desc.update(model)
+    return {'models': [desc]}
+
+
+@pytest.mark.parametrize('name', ['world_dog.yaml', 'world_miro.yaml'])
+def test_the_shipped_worlds_parse(name):
+    with open(os.path.join(CONFIG, name)) as f:
+        spec = parse_world(yaml.safe_load(f))
+    assert spec.models and all(m.name for m in spec.models)
+
+
+def test_the_dog_world_has_the_spec_s_models_and_places():
+    with open(os.path.join(CONFIG, 'world_dog.yaml')) as f:
+        spec = parse_world(yaml.safe_load(f))
+    robot, ball = spec.model('robot'), spec.model('ball')
+    assert robot.pose[:2] == (-5.0, 7.0) and robot.pose[3] == pytest.approx(math.pi, abs=1e-4)
+    assert ball.pose[:3] == (-7.0, 6.0, 0.5)
+    assert spec.model('human').pose[:2] == (-7.0, 7.0)
+    assert robot.drive == 'diff_drive' and ball.drive == 'planar_move'
+    assert robot.plugins['diff_drive']['max_linear'] == 2.0
+    assert robot.plugins['diff_drive']['max_angular'] == 3.0
+    assert ball.plugins['planar_move']['max_linear'] == 2.0
+    assert robot.topic('cmd_vel') == '/robot/cmd_vel'
+
+
+@pytest.mark.parametrize('desc,key', [
+    (world(nmae='x'), "'nmae'"),
+    (world(plugins={'diff_driv': {}}), "'diff_driv'"),
+    (world(plugins={'odometry': {'rte': 5}}), "'rte'"),
+    ({'models': [], 'bound': [0, 1, 0, 1]}, "'bound'"),
+])
+def test_an_unknown_key_is_an_error_that_names_it(desc, key):
+    with pytest.raises(ValueError, match=key):
+        parse_world(desc)
+
+
+@pytest.mark.parametrize('desc,why', [
+    (world(pose=[0, 0, 0]), 'pose must be'),
+    (world(pose=[0, 0, 'a', 0]), 'must be a number'),
+    (world(pose=[0, 0, float('nan'), 0]), 'must be finite'),
+    (world(plugins={'odometry': {'rate': -5}}), 'must be positive'),
+    (world(plugins={'odometry': {'rate': True}}), 'must be a number'),
+    (world(plugins={'planar_move': {'kinematic': 'yes'}}), 'true or false'),
+    (world(plugins={'diff_drive': {'cmd_timeout': -1}}), '>= 0'),
+    (world(plugins={'diff_drive': {}, 'planar_move': {}}), 'at most one drive'),
+    (world(description='/p'), 'exactly one of'),
+    ({'models': [{'name': 'a', 'urdf': 'x'}, {'name': 'a', 'urdf': 'y'}]}, 'unique'),
+    ({'models': []}, 'non-empty'),
+    (dict(world(), bounds=[1, 0, 0, 1]), 'empty'),
+])
+def test_malformed_worlds_are_refused_with_the_reason(desc, why):
+    with pytest.raises(ValueError, match=why):
+        parse_world(desc)
+
+
+def test_plugin_defaults_are_filled_in():
+    spec = parse_world(world(plugins={'camera': {'link': 'cam'}}))
+    camera = spec.models[0].plugins['camera']
+    assert camera == dict(PLUGIN_OPTIONS['camera'], link='cam')
+    assert (camera['width'], camera['height'], camera['rate']) == (800, 800, 30.0)
+
+
+class FakeWall(object):
+    def __init__(self):
+        self.t = 0.0
+
+    def __call__(self):
+        return self.t
+
+
+@pytest.mark.parametrize('rtf', [1.0, 2.0, 0.5])
+def test_pacing_holds_simulated_time_to_the_real_time_factor(rtf):
+    wall = FakeWall()
+    pacer = Pacer(rtf, wall=wall)
+    pacer.restart(0.0)
+    sim = 0.0
+    for _ in range(1000):
+        sim += 0.01                      # a step takes no wall time
+        wall.t += pacer.delay(sim)       # ... and the loop sleeps as told
+    assert sim / wall.t == pytest.approx(rtf, rel=1e-6)
+
+
+def test_pacing_at_zero_never_waits():
+    wall = FakeWall()
+    pacer = Pacer(0.0, wall=wall)
+    assert all(pacer.delay(t * 0.01) == 0.0 for t in range(100))
+
+
+def test_a_loop_that_falls_behind_starts_again_instead_of_racing():
+    wall = FakeWall()
+    pacer = Pacer(1.0, wall=wall, max_lag=0.25)
+    pacer.restart(0.0)
+    wall.t = 2.0                          # a 2 s hiccup
+    assert pacer.delay(0.01) == 0.0       # behind: no wait, and a new start
+    assert pacer.delay(0.02) == pytest.approx(0.01)
+
+
+@pytest.mark.parametrize('rtf', [-1.0, float('nan'), float('inf')])
+def test_pacing_refuses_a_bad_factor(rtf):
+    with pytest.raises(ValueError):
+        Pacer(rtf)

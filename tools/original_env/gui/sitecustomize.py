@@ -1,0 +1,44 @@
+"""Start-up hook of the original-code environment (tools/original_env/shell.sh).
+
+Python imports ``sitecustomize`` at start-up from the first directory of
+sys.path that has one; this directory is on PYTHONPATH only inside that
+environment. It does two things:
+
+1. runs the ``sitecustomize`` it shadows (Debian's, or one further down
+   PYTHONPATH), so nothing the system configured is lost;
+2. when a display is configured (DISPLAY, WAYLAND_DISPLAY or an explicit
+   QT_QPA_PLATFORM such as ``offscreen``) and EXP2_CV2_GUI_THREAD is not 0,
+   arranges for cv2's HighGUI calls to run on one GUI thread once cv2 is
+   imported (see exp2_cv2_gui.py for why). cv2 itself is not imported here.
+
+Without a display nothing is changed: cv2.imshow then behaves as OpenCV's Qt
+backend does, which aborts the whole process ("could not connect to display",
+exit status 134).
+"""
+import os
+import sys
+
+
+def _run_shadowed_sitecustomize():
+    import importlib.machinery
+    import importlib.util
+    here = os.path.dirname(os.path.abspath(__file__))
+    rest = [p for p in sys.path if os.path.abspath(p or os.curdir) != here]
+    spec = importlib.machinery.PathFinder.find_spec('sitecustomize', rest)
+    if spec is None or spec.loader is None or spec.origin == os.path.abspath(__file__):
+        return
+    module = importlib.util.module_from_spec(spec)
+    try:
+        spec.loader.exec_module(module)
+    except Exception as exc:  # as Python does for a failing sitecustomize
+        sys.stderr.write('Error in sitecustomize %s: %r\n' % (spec.origin, exc))
+
+
+def _display_configured():
+    return any(os.environ.get(v) for v in ('DISPLAY', 'WAYLAND_DISPLAY', 'QT_QPA_PLATFORM'))
+
+
+_run_shadowed_sitecustomize()
+if os.environ.get('EXP2_CV2_GUI_THREAD', '1') != '0' and _display_configured():
+    import exp2_cv2_gui
+    exp2_cv2_gui.install()

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# A shell in which code written for the original Gazebo assignment runs
+# unmodified against this package's simulator (opt-in: nothing outside this
+# process's environment changes).
+#   bash tools/original_env/shell.sh                 interactive shell
+#   bash tools/original_env/shell.sh CMD [ARGS...]   run CMD in it
+# It installs what the original imports and Debian can give (tf, scipy;
+# imutils from PyPI), sources the catkin workspace, and sets PYTHONPATH so
+# that cv2's HighGUI runs on one thread (the original calls cv2.imshow from
+# several rospy callback threads, which hangs Debian's Qt-based OpenCV) and
+# smach / smach_ros / gazebo_msgs fall back to small replacements only where
+# the real module does not import. See tools/original_env/README.md.
+set -eo pipefail
+
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+WS="${EXP2_WS:-$HOME/.cache/exp_assignment2_ws}"
+# ROS runs on Debian's python3, whatever python3 comes first on PATH.
+export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"
+
+APT_PACKAGES=(python3-tf python3-scipy python3-opencv python3-numpy python3-pip)
+IMUTILS_VERSION=0.5.4
+
+log() { printf '[original-env] %s\n' "$*" >&2; }
+as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
+
+# Installs are skipped when present, so this is cheap after the first run.
+missing=()
+for p in "${APT_PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  log "installing Debian packages: ${missing[*]}"
+  as_root apt-get update -qq
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+if ! /usr/bin/python3 -c 'import imutils' 2>/dev/null; then
+  log "installing imutils==$IMUTILS_VERSION from PyPI for /usr/bin/python3"
+  as_root /usr/bin/python3 -m pip install -q --break-system-packages \
+    --root-user-action=ignore "imutils==$IMUTILS_VERSION"
+fi
+
+if [ ! -f "$WS/devel/setup.bash" ]; then
+  log "no catkin workspace at $WS: build it first with: bash tools/run setup"
+  exit 1
+fi
+set +u
+# shellcheck disable=SC1091
+source "$WS/devel/setup.bash"
+export ROS_HOME="${ROS_HOME:-$WS/ros_home}"
+
+# Decided now, with the real interpreter and the workspace's PYTHONPATH, so a
+# real smach (or smach_ros, gazebo_msgs) is never shadowed.
+eval "$(/usr/bin/python3 "$HERE/env.py")"
+log "enabled: $EXP2_ORIGINAL_ENV"
+
+if [ $# -gt 0 ]; then
+  exec "$@"
+fi
+# ~/.bashrc may put another python3 (pyenv) first again: restore ours after it.
+exec bash --rcfile <(printf '%s\n' '[ -f ~/.bashrc ] && . ~/.bashrc' \
+  "export PATH=$(printf %q "$PATH") PYTHONPATH=$(printf %q "$PYTHONPATH")" \
+  'PS1="(original-env) $PS1"') -i
