@@ -6,8 +6,10 @@ import unittest
 
 import rospy
 import rostest
+from actionlib_msgs.msg import GoalStatus
 
-from checks import DogObserver, clock, wait_until
+from checks import DogObserver, Watch, clock, wait_until
+from exp_assignment2.msg import PlanningActionResult
 
 KENNEL = (7.0, 7.0)
 
@@ -18,6 +20,11 @@ class TestDogSleep(unittest.TestCase):
         rospy.init_node('check_dog_sleep')
         clock()
         cls.dog = DogObserver()
+        cls.results = Watch('/robot_reaching_goal/result', PlanningActionResult, keep=True)
+
+    def reached(self):
+        """The robot goals that succeeded (the one to the kennel)."""
+        return [r for r in self.results.all if r.status.status == GoalStatus.SUCCEEDED]
 
     def kennel_distance(self):
         if self.dog.robot.msg is None:
@@ -27,9 +34,10 @@ class TestDogSleep(unittest.TestCase):
 
     def test_goes_home_sleeps_14s_and_wakes(self):
         self.assertTrue(wait_until(lambda: self.dog.state() == 'SLEEP', 10.0))
-        self.assertTrue(wait_until(lambda: self.kennel_distance() < 0.15, 90.0),
+        self.assertTrue(wait_until(lambda: self.reached(), 90.0),
                         'still %.2f m from the kennel' % self.kennel_distance())
-        arrived = rospy.get_time()
+        arrived = self.reached()[0].header.stamp.to_sec()
+        self.assertLess(self.kennel_distance(), 0.15)
         self.assertNotIn('PLAY', [s for _, s in self.dog.states], 'the ball is ignored')
 
         def woke():
@@ -37,7 +45,7 @@ class TestDogSleep(unittest.TestCase):
         self.assertTrue(wait_until(woke, 20.0))
         rested = woke()[0] - arrived
         rospy.loginfo('rested %.2f s at the kennel', rested)
-        self.assertAlmostEqual(rested, 14.0, delta=0.5)
+        self.assertAlmostEqual(rested, 14.0, delta=0.1)
 
 
 if __name__ == '__main__':

@@ -40,8 +40,10 @@ class TestPlanningAction(unittest.TestCase):
     def test_robot_goal_gives_the_original_feedback_and_arrives(self):
         state, stats = self.run_goal(self.robot, make_goal(-3.0, 5.0))
         self.assertEqual(state, GoalStatus.SUCCEEDED)
-        self.assertEqual([s for s in FEEDBACK if s in stats], list(FEEDBACK))
-        self.assertEqual(stats[-1], 'Target reached!')
+        # 'Target reached!' is the last feedback and the result's text; feedback sent
+        # just before the result may arrive after it, when the client drops it
+        self.assertEqual([s for s in FEEDBACK[:3] if s in stats], list(FEEDBACK[:3]))
+        self.assertEqual(self.robot.get_goal_status_text(), 'Target reached!')
         self.robot_pose.next()
         x, y, _, _ = self.robot_pose.xyzyaw()
         self.assertLess(math.hypot(x + 3.0, y - 5.0), 0.15)

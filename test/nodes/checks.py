@@ -57,6 +57,13 @@ class Watch(object):
     def on_message(self, msg):
         pass
 
+    def after(self, stamp, ros_seconds=10.0):
+        """The first message stamped after ``stamp`` (s of ROS time)."""
+        assert wait_until(lambda: self.msg is not None
+                          and self.msg.header.stamp.to_sec() > stamp, ros_seconds), \
+            'no message after %.2f s' % stamp
+        return self.msg
+
     def next(self, ros_seconds=10.0):
         """The first message after now."""
         count = self.count

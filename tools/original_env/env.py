@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Work out the environment of tools/original_env/shell.sh (PYTHONPATH, PATH).
 
 Run it with the interpreter the original code will use (/usr/bin/python3) in
@@ -10,8 +9,9 @@ the environment it will inherit (workspace sourced). It prints shell
   *now*: smach, smach_ros, gazebo_msgs. Each is checked in a fresh interpreter
   with the shims decided so far (smach_ros needs a smach), so a real module
   is never shadowed; the shims also come last.
-* PATH: bin/ (``python`` = /usr/bin/python3, for ``#!/usr/bin/env python``
-  scripts such as the original's) and /usr/bin before the rest.
+* PATH: $EXP2_ORIGINAL_BIN (where shell.sh links ``python`` to /usr/bin/python3,
+  for ``#!/usr/bin/env python`` scripts such as the original's) and /usr/bin
+  before the rest.
 * EXP2_ORIGINAL_ENV: the one-line summary shell.sh prints.
 """
 import json
@@ -64,7 +64,8 @@ def compute(environ):
                      ' (use xvfb-run or QT_QPA_PLATFORM=offscreen)')
     return {
         'PYTHONPATH': _join(os.path.join(HERE, 'gui'), base, *shims),
-        'PATH': _join(os.path.join(HERE, 'bin'), '/usr/bin', '/bin', environ.get('PATH', '')),
+        'PATH': _join(environ.get('EXP2_ORIGINAL_BIN', ''), '/usr/bin', '/bin',
+                      environ.get('PATH', '')),
         'EXP2_ORIGINAL_ENV': '; '.join(notes),
     }
 

@@ -48,6 +48,12 @@ set +u
 source "$WS/devel/setup.bash"
 export ROS_HOME="${ROS_HOME:-$WS/ros_home}"
 
+# The original's scripts start with "#!/usr/bin/env python": Debian has no
+# "python", and another one later on PATH could not import Debian's rospy.
+export EXP2_ORIGINAL_BIN="$WS/original_env_bin"
+mkdir -p "$EXP2_ORIGINAL_BIN"
+ln -sfn /usr/bin/python3 "$EXP2_ORIGINAL_BIN/python"
+
 # Decided now, with the real interpreter and the workspace's PYTHONPATH, so a
 # real smach (or smach_ros, gazebo_msgs) is never shadowed.
 eval "$(/usr/bin/python3 "$HERE/env.py")"

@@ -6,6 +6,7 @@ throttled), so a flood of bad input does not flood this log either.
 import rospy
 from std_msgs.msg import Float64MultiArray, Int64MultiArray, String
 
+from exp_assignment2.behaviour.miro import STATE_PARAM
 from exp_assignment2.grammar import CommandError, parse_motion_command, quote
 
 
@@ -17,6 +18,11 @@ def on_command(msg):
     rospy.loginfo('command: %s', msg.data.strip())
 
 
+def on_state(msg):
+    known = msg.data in STATE_PARAM.values()
+    rospy.loginfo('state: %s', msg.data if known else quote(msg.data))
+
+
 def on_arrival(msg):
     if len(msg.data) >= 5:
         rospy.loginfo('arrival #%d: target (%g, %g), robot at (%.2f, %.2f)', int(msg.data[4]),
@@ -25,8 +31,7 @@ def on_arrival(msg):
 
 def main():
     rospy.init_node('print_info')
-    rospy.Subscriber('/state', String, lambda m: rospy.loginfo('state: %s', quote(m.data)),
-                     queue_size=100)
+    rospy.Subscriber('/state', String, on_state, queue_size=100)
     rospy.Subscriber('/command', String, on_command, queue_size=100)
     rospy.Subscriber('/target_pos', Int64MultiArray, lambda m: rospy.loginfo(
         'target: (%s)', ', '.join(str(v) for v in m.data[:2])), queue_size=100)

@@ -67,7 +67,11 @@ class CommandPublisher(object):
         twist = Twist()
         twist.linear.x, twist.angular.z = linear, self.sign * angular
         self.last = rospy.get_time()
-        self.pub.publish(twist)
+        try:
+            self.pub.publish(twist)
+        except rospy.ROSException:
+            if not rospy.is_shutdown():   # a frame arriving while the node stops: no trace
+                raise
 
     def _hold(self, _event):
         with self.lock:

@@ -23,6 +23,7 @@ from exp_assignment2.msg import Gesture
 from exp_assignment2.refusal import parse_or_refuse
 
 ACK_TIMEOUT = 1.0   # s of ROS time for the grounding node to answer an order
+QUIET_TRIES = 10    # unanswered orders sent again before a warning
 
 
 class MiroGoal(object):
@@ -61,12 +62,15 @@ class RosMiroBody(object):
             if self.goal is not None:
                 self.goal.cancel()
             self.goal = goal
+        tries = 0
         while not self.clock.is_shutdown():
             self.pub.publish(String(command))
             if self.clock.wait_until(lambda: goal.target is not None, ACK_TIMEOUT):
                 break
-            rospy.logwarn_throttle(10.0, '%r: no answer on /target_pos yet; sending again'
-                                   % command)
+            tries += 1
+            if tries % QUIET_TRIES == 0:   # the first ones: the grounding node is starting
+                rospy.logwarn('%r: no answer on /target_pos for %.0f s; sending again',
+                              command, tries * ACK_TIMEOUT)
         return goal
 
     def _on_target(self, msg):
