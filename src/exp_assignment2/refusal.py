@@ -28,11 +28,12 @@ class RefusalLog(object):
     :param log: called with one line (e.g. ``rospy.logerr``)
     :param now: wall clock (s); throttling is about log volume, so wall time
     :param schedule: ``schedule(delay, fn)`` runs ``fn`` later (a daemon timer)
+    :param what: the word for what happened to the input (refused, clamped)
     """
 
     def __init__(self, interface, log, period=1.0, now=time.monotonic,
-                 schedule=_daemon_timer):
-        self.interface, self.log, self.period = interface, log, period
+                 schedule=_daemon_timer, what='refused'):
+        self.interface, self.log, self.period, self.what = interface, log, period, what
         self.now, self.schedule = now, schedule
         self.lock = threading.Lock()
         self.last = None          # when the last line was written
@@ -58,15 +59,15 @@ class RefusalLog(object):
             self.flush_pending = False
             if not self.held:
                 return
-            line = '%s: %d more refused in the last %.0f s' % (self.interface, self.held,
-                                                               self.period)
+            line = '%s: %d more %s in the last %.0f s' % (self.interface, self.held, self.what,
+                                                          self.period)
             self.last, self.held = self.now(), 0
         self.log(line)
 
     def _line(self, reason):
         line = '%s: %s' % (self.interface, reason)
         if self.held:
-            line += ' (and %d more refused)' % self.held
+            line += ' (and %d more %s)' % (self.held, self.what)
         return line[:MAX_LINE]
 
 

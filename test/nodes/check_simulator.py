@@ -8,6 +8,7 @@ import unittest
 
 import rospy
 import rostest
+import tf2_ros
 from geometry_msgs.msg import Twist
 from rosgraph_msgs.msg import Log
 from sensor_msgs.msg import CameraInfo, CompressedImage, JointState
@@ -15,6 +16,7 @@ from std_msgs.msg import Float64
 from std_srvs.srv import Empty
 
 from checks import Pose, Rosout, Watch, clock, wait_for_subscribers, wait_until
+from exp_assignment2.geometry import yaw_of
 from exp_assignment2.vision import BallDetector, decode_jpeg
 
 SPAWN = (-5.0, 7.0, math.pi)
@@ -47,6 +49,8 @@ class TestSimulator(unittest.TestCase):
         cls.image = Watch('/robot/camera1/image_raw/compressed', CompressedImage)
         cls.info = Watch('/robot/camera1/camera_info', CameraInfo)
         cls.rosout = Rosout()
+        cls.tf = tf2_ros.Buffer()
+        cls.tf_listener = tf2_ros.TransformListener(cls.tf)
         for pub in (cls.cmd, cls.head, cls.height):
             wait_for_subscribers(pub)
         cls.image.next(30)
@@ -148,6 +152,20 @@ class TestSimulator(unittest.TestCase):
         self.assertAlmostEqual(head(), math.pi / 2, delta=0.03)
         self.head.publish(Float64(0.0))
         clock().sleep(1.5)
+
+    def test_tf_has_the_camera_and_its_yaw_follows_the_head(self):
+        frame = self.info.next().header.frame_id
+        for angle in (0.6, -0.6, 0.0):
+            self.head.publish(Float64(angle))
+            clock().sleep(1.5)
+            stamp = self.odom.next().header.stamp
+            camera = self.tf.lookup_transform('odom', frame, stamp, rospy.Duration(5.0))
+            q = camera.transform.rotation
+            robot_yaw = self.odom.xyzyaw()[3]
+            seen = angle_diff(yaw_of((q.x, q.y, q.z, q.w)), robot_yaw)
+            rospy.loginfo('head commanded %+.2f rad: camera yaw - robot yaw = %+.3f rad',
+                          angle, seen)
+            self.assertAlmostEqual(seen, angle, delta=0.03)
 
     def test_reset_puts_the_robot_back(self):
         self.drive(0.5, 0.3, 2.0)

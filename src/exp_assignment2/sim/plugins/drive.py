@@ -2,6 +2,7 @@
 import rospy
 from geometry_msgs.msg import Twist
 
+from exp_assignment2.refusal import RefusalLog
 from exp_assignment2.sim.drives import DiffDrive, PlanarMove
 
 
@@ -13,6 +14,9 @@ class DrivePlugin(object):
         self.sim, self.model, self.drive = sim, model, drive
         sim.drives[model.name] = drive
         self.topic = model.topic(drive.options['topic'])
+        # one warning line per topic and 5 s, whatever arrives (throttled by topic)
+        self.ignored = RefusalLog(self.topic, rospy.logwarn, period=5.0, what='ignored')
+        self.clamped = RefusalLog(self.topic, rospy.logwarn, period=5.0, what='clamped')
         rospy.Subscriber(self.topic, Twist, self._on_twist, queue_size=1)
 
     def _on_twist(self, msg):
@@ -23,11 +27,11 @@ class DrivePlugin(object):
         try:
             clamped = self.drive.command(*values)
         except ValueError as exc:
-            rospy.logwarn_throttle(5.0, '%s: ignored: %s' % (self.topic, exc))
+            self.ignored('ignored: %s' % exc)
             return
         if clamped:
-            rospy.logwarn_throttle(5.0, '%s: (%.3g, %.3g, %.3g) clamped to the limits, %s'
-                                   % ((self.topic,) + tuple(values) + (self.drive.limits,)))
+            self.clamped('(%.3g, %.3g, %.3g) clamped to the limits, %s'
+                         % (tuple(values) + (self.drive.limits,)))
 
     def before_step(self):
         self.drive.apply()

@@ -4,6 +4,7 @@ import rospy
 from sensor_msgs.msg import JointState
 from std_msgs.msg import Float64, Header
 
+from exp_assignment2.refusal import RefusalLog
 from exp_assignment2.sim.drives import Height, JointPosition
 
 
@@ -13,6 +14,8 @@ class CommandPlugin(object):
     def __init__(self, sim, model, options, controller):
         self.sim, self.controller = sim, controller
         self.topic = model.topic(options['topic'])
+        self.ignored = RefusalLog(self.topic, rospy.logwarn, period=5.0, what='ignored')
+        self.clamped = RefusalLog(self.topic, rospy.logwarn, period=5.0, what='clamped')
         sim.drives[model.name + '/' + options['topic']] = controller
         rospy.Subscriber(self.topic, Float64, self._on_command, queue_size=1)
 
@@ -24,10 +27,10 @@ class CommandPlugin(object):
         try:
             used = self.controller.command(value)
         except ValueError as exc:
-            rospy.logwarn_throttle(5.0, '%s: ignored: %s' % (self.topic, exc))
+            self.ignored('ignored: %s' % exc)
             return
         if used != value:
-            rospy.logwarn_throttle(5.0, '%s: %.3g clamped to %.3g' % (self.topic, value, used))
+            self.clamped('%.3g clamped to %.3g' % (value, used))
 
     def before_step(self):
         self.controller.apply()

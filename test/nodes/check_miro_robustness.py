@@ -1,0 +1,66 @@
+#!/usr/bin/env python3
+"""Scenario B as a hostile user would treat it: floods of bad words, orders
+and gestures give a few short lines; a huge /cmd_vel cannot put MiRo off its
+grid or make its pose non-finite, and MiRo still arrives where it is sent."""
+import math
+import time
+import unittest
+
+import rospy
+import rostest
+from geometry_msgs.msg import Twist
+from std_msgs.msg import Float64MultiArray, String
+
+from checks import Pose, Rosout, Watch, clock, wait_for_subscribers, wait_until
+from exp_assignment2.msg import Gesture
+
+BURST = 1000
+
+
+class TestMiroRobustness(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('check_miro_robustness')
+        clock()
+        cls.rosout, cls.odom = Rosout(), Pose('/odom')
+        cls.arrivals = Watch('/arrival', Float64MultiArray, keep=True)
+        cls.pubs = {topic: rospy.Publisher(topic, cls_, queue_size=BURST + 10) for topic, cls_
+                    in (('/voice', String), ('/command', String), ('/gesture', Gesture),
+                        ('/cmd_vel', Twist))}
+        for pub in cls.pubs.values():
+            wait_for_subscribers(pub)
+
+    def test_1_floods_of_bad_input_make_a_few_short_lines(self):
+        for i in range(BURST):
+            self.pubs['/voice'].publish(String('go to %d 99' % i))
+            self.pubs['/command'].publish(String('go_nowhere %d' % i))
+            self.pubs['/gesture'].publish(Gesture(person_x=-i, person_y=0, point_x=1,
+                                                  point_y=1))
+        time.sleep(3.0)                         # throttling is in wall time
+        for topic in ('/voice', '/command', '/gesture'):
+            lines = self.rosout.lines(topic + ':')
+            rospy.loginfo('%s: %d bad messages gave %d lines', topic, BURST, len(lines))
+            self.assertTrue(2 <= len(lines) <= 15, '%s: %d lines' % (topic, len(lines)))
+        self.assertFalse(self.rosout.lines('go_nowhere', node='/print_info'),
+                         'print_info echoes only commands that are accepted')
+        self.assertTrue(all(len(m.msg) <= 2000 for m in self.rosout.all))
+
+    def test_2_a_huge_velocity_cannot_put_miro_off_its_grid(self):
+        huge = Twist()
+        huge.linear.x = huge.linear.y = 1.0e308
+        end = rospy.get_time() + 3.0
+        while rospy.get_time() < end:
+            self.pubs['/cmd_vel'].publish(huge)
+            clock().sleep(0.05)
+        x, y, z, _ = self.odom.xyzyaw()
+        self.assertTrue(all(math.isfinite(v) for v in (x, y, z)))
+        self.assertTrue(-0.25 <= x <= 10.25 and -0.25 <= y <= 10.25, (x, y))
+        count = self.arrivals.count
+        self.assertTrue(wait_until(lambda: self.arrivals.count > count, 60.0),
+                        'MiRo arrives somewhere again')
+        a = self.arrivals.msg.data
+        self.assertLessEqual(math.hypot(a[2] - a[0], a[3] - a[1]), 0.05)
+
+
+if __name__ == '__main__':
+    rostest.rosrun('exp_assignment2', 'check_miro_robustness', TestMiroRobustness)

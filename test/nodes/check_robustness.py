@@ -1,0 +1,94 @@
+#!/usr/bin/env python3
+"""Scenario A as a hostile or unlucky user would treat it: floods of bad
+commands give a few short log lines; huge velocities cannot break a body and
+a normal goal still succeeds; a node killed late in a run comes back and
+works (it finds its servers although ROS time was far from 0)."""
+import math
+import re
+import time
+import unittest
+
+import actionlib
+import rospy
+import rostest
+from actionlib_msgs.msg import GoalStatus
+from geometry_msgs.msg import Twist
+from std_msgs.msg import String
+
+from checks import DogObserver, Rosout, clock, kill_node, node_pid, wait_for_subscribers, \
+    wait_until
+from exp_assignment2.msg import PlanningAction
+from exp_assignment2.planning import make_goal
+
+BURST = 1000
+
+
+class TestRobustness(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('check_robustness')
+        clock()
+        cls.dog, cls.rosout = DogObserver(), Rosout()
+        cls.command = rospy.Publisher('/ball/command', String, queue_size=BURST + 10)
+        cls.robot_cmd = rospy.Publisher('/robot/cmd_vel', Twist, queue_size=10)
+        cls.ball_cmd = rospy.Publisher('/ball/cmd_vel', Twist, queue_size=10)
+        cls.ball = actionlib.SimpleActionClient('/reaching_goal', PlanningAction)
+        assert cls.ball.wait_for_server(rospy.Duration(60))
+        for pub in (cls.command, cls.robot_cmd, cls.ball_cmd):
+            wait_for_subscribers(pub)
+
+    def refusals(self):
+        return self.rosout.lines('/ball/command', node='/human_commands')
+
+    def test_1_a_flood_of_bad_commands_makes_a_few_short_lines(self):
+        start = time.monotonic()
+        for i in range(BURST):
+            self.command.publish(String('jump %d \u0663' % i))
+        self.command.publish(String('x' * 1000000))
+        sent = time.monotonic() - start
+        time.sleep(3.0)                           # throttling is in wall time
+        lines = self.refusals()
+        rospy.loginfo('%d bad commands in %.2f s gave %d lines', BURST + 1, sent, len(lines))
+        self.assertLessEqual(len(lines), 15)
+        self.assertGreaterEqual(len(lines), 2, 'the burst was not reported at all')
+        self.assertTrue(all(len(m.msg) <= 2000 for m in self.rosout.all))
+        counted = sum(int(n) for m in lines for n in re.findall(r'(\d+) more refused', m.msg))
+        self.assertGreater(counted, BURST // 2, 'the held-back refusals are counted')
+
+    def test_2_huge_velocities_cannot_break_a_body_and_a_goal_still_succeeds(self):
+        huge = Twist()
+        huge.linear.x = huge.linear.y = huge.angular.z = 1.0e308
+        end = rospy.get_time() + 2.0
+        while rospy.get_time() < end:
+            self.robot_cmd.publish(huge)
+            self.ball_cmd.publish(huge)
+            clock().sleep(0.05)
+        for pose in (self.dog.robot.next().pose.pose, self.dog.ball.next().pose.pose):
+            p = pose.position
+            self.assertTrue(all(math.isfinite(v) for v in (p.x, p.y, p.z)))
+            self.assertTrue(abs(p.x) < 9.3 and abs(p.y) < 9.3, (p.x, p.y))
+        self.ball.send_goal(make_goal(2.0, 3.0, 0.5))
+        self.assertTrue(self.ball.wait_for_result(rospy.Duration(60)))
+        self.assertEqual(self.ball.get_state(), GoalStatus.SUCCEEDED)
+
+    def test_3_a_node_killed_late_comes_back_and_works(self):
+        clock().sleep(max(0.0, 60.0 - rospy.get_time()))     # late: ROS time far from 0
+        for name in ('/human_commands', '/go_to_point_ball'):
+            old = node_pid(name)
+            kill_node(name)
+            rospy.loginfo('killed %s (pid %d) at %.1f s of ROS time', name, old,
+                          rospy.get_time())
+        # latched: the respawned human_commands gets it when it subscribes
+        latched = rospy.Publisher('/ball/command', String, queue_size=1, latch=True)
+        latched.publish(String('go to -2 -3'))
+
+        def at_target():
+            x, y, _, _ = self.dog.ball.xyzyaw()
+            return math.hypot(x + 2.0, y + 3.0) < 0.15
+        self.assertTrue(wait_until(at_target, 60.0), 'ball at %s' % (self.dog.ball.xyzyaw(),))
+        for name in ('/human_commands', '/go_to_point_ball'):
+            self.assertIsNotNone(node_pid(name), '%s is not back' % name)
+
+
+if __name__ == '__main__':
+    rostest.rosrun('exp_assignment2', 'check_robustness', TestRobustness)
