@@ -19,7 +19,8 @@ def package_dir():
 @pytest.mark.skipif(shutil.which('catkin_lint') is None, reason='catkin_lint not installed')
 def test_catkin_lint_is_clean():
     path = package_dir()
-    assert path, 'rospack cannot find exp_assignment2: source the workspace (tools/run does)'
+    if not path:    # tools/run test always has one; a bare pytest run may not
+        pytest.skip('no catkin workspace: rospack cannot find exp_assignment2')
     assert os.path.basename(path) == 'exp_assignment2'
     proc = subprocess.run(['catkin_lint', '-W2', '--strict', path], stdout=subprocess.PIPE,
                           stderr=subprocess.STDOUT, universal_newlines=True, timeout=120)
