@@ -3,24 +3,17 @@
 close, sweeps its head, and returns to NORMAL when the ball hides. The
 steps run in order (test_1 ... test_3) on one running system."""
 import math
-import unittest
 
 import rospy
 import rostest
-from std_msgs.msg import String
 
-from checks import DogObserver, clock, wait_for_subscribers, wait_until
+from checks import DogCheck, wait_until
 
 LOST_TIMEOUT = 2 * math.pi / 0.5
 
 
-class TestDogPlay(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        rospy.init_node('check_dog_play')
-        clock()
-        cls.dog = DogObserver()
-        cls.command = rospy.Publisher('/ball/command', String, queue_size=10)
+class TestDogPlay(DogCheck):
+    NODE = 'check_dog_play'
 
     def test_1_enters_play_within_20s_and_comes_within_1_5m(self):
         self.assertTrue(wait_until(lambda: self.dog.state() == 'PLAY', 20.0),
@@ -38,9 +31,8 @@ class TestDogPlay(unittest.TestCase):
 
     def test_3_hiding_the_ball_brings_normal_within_the_timeout(self):
         self.assertTrue(wait_until(lambda: self.dog.state() == 'PLAY', 30.0))
-        wait_for_subscribers(self.command)
         hidden_at = rospy.get_time()
-        self.command.publish(String('hide'))
+        self.tell_the_ball('hide')
         self.assertTrue(wait_until(lambda: self.dog.state() == 'NORMAL', LOST_TIMEOUT + 5.0))
         took = self.dog.entered('NORMAL')[-1] - hidden_at
         rospy.loginfo('NORMAL %.1f s after hiding the ball', took)

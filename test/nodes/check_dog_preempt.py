@@ -2,26 +2,22 @@
 """Scenario A: while the dog wanders to a random goal, the ball appears
 ahead of it; the robot goal is preempted and the dog plays."""
 import math
-import unittest
 
-import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
-from std_msgs.msg import String
 
-from checks import DogObserver, Watch, clock, wait_for_subscribers, wait_until
+from checks import DogCheck, Watch, clock, wait_until
 from exp_assignment2.msg import PlanningActionGoal, PlanningActionResult
 
 
-class TestDogPreempt(unittest.TestCase):
+class TestDogPreempt(DogCheck):
+    NODE = 'check_dog_preempt'
+
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('check_dog_preempt')
-        clock()
-        cls.dog = DogObserver()
+        super(TestDogPreempt, cls).setUpClass()
         cls.goals = Watch('/robot_reaching_goal/goal', PlanningActionGoal)
         cls.results = Watch('/robot_reaching_goal/result', PlanningActionResult, keep=True)
-        cls.command = rospy.Publisher('/ball/command', String, queue_size=10)
 
     def test_ball_seen_preempts_the_robot_goal(self):
         self.assertTrue(wait_until(lambda: self.goals.msg is not None, 60.0),
@@ -32,8 +28,7 @@ class TestDogPreempt(unittest.TestCase):
         ahead = (max(-7.5, min(7.5, x + 3.0 * math.cos(yaw))),
                  max(-7.5, min(7.5, y + 3.0 * math.sin(yaw))))
         active = self.goals.msg.goal_id.id
-        wait_for_subscribers(self.command)
-        self.command.publish(String('go to %.2f %.2f' % ahead))
+        self.tell_the_ball('go to %.2f %.2f' % ahead)
         self.assertTrue(wait_until(lambda: self.dog.state() == 'PLAY', 40.0),
                         'states: %s' % self.dog.states)
 

@@ -8,6 +8,7 @@ import math
 import os
 import signal
 import threading
+import unittest
 import xmlrpc.client
 
 import rosgraph
@@ -133,6 +134,24 @@ class DogObserver(object):
 
     def head_reached(self, angle, tolerance):
         return any(abs(h - angle) <= tolerance for h in self.head_positions)
+
+
+class DogCheck(unittest.TestCase):
+    """A checker of scenario A: its node, a :class:`DogObserver` and the
+    ``/ball/command`` publisher a person uses (``NODE`` names the node)."""
+
+    NODE = 'check_dog'
+
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node(cls.NODE)
+        clock()
+        cls.dog = DogObserver()
+        cls.command = rospy.Publisher('/ball/command', String, queue_size=10)
+
+    def tell_the_ball(self, text):
+        wait_for_subscribers(self.command)
+        self.command.publish(String(text))
 
 
 def kill_node(name):

@@ -72,6 +72,22 @@ class FakeGoal(object):
             self.state = 'cancelled'
 
 
+def step_towards(body, goal, speed, dt, tolerance):
+    """Move ``body`` (x, y attributes) straight at ``goal``'s target; the goal
+    succeeds within ``tolerance``. Returns the heading taken, or None."""
+    dx, dy = goal.target[0] - body.x, goal.target[1] - body.y
+    dist = math.hypot(dx, dy)
+    step = min(dist, speed * dt)
+    heading = None
+    if dist > 0:
+        body.x += dx / dist * step
+        body.y += dy / dist * step
+        heading = math.atan2(dy, dx)
+    if dist - step < tolerance:
+        goal.state = 'succeeded'
+    return heading
+
+
 class RecordingLog(object):
     def __init__(self):
         self.lines = []
@@ -149,16 +165,9 @@ class DogWorld(object):
     def tick(self, now, dt):
         active = [g for g in self.goals if not g.done()]
         if active and not self.goal_stuck:
-            goal = active[-1]
-            dx, dy = goal.target[0] - self.x, goal.target[1] - self.y
-            dist = math.hypot(dx, dy)
-            step = min(dist, self.goal_speed * dt)
-            if dist > 0:
-                self.x += dx / dist * step
-                self.y += dy / dist * step
-                self.yaw = math.atan2(dy, dx)
-            if dist - step < 0.1:
-                goal.state = 'succeeded'
+            heading = step_towards(self, active[-1], self.goal_speed, dt, 0.1)
+            if heading is not None:
+                self.yaw = heading
         else:
             v, w = self.cmd
             self.yaw = normalize_angle(self.yaw + w * dt)
@@ -199,15 +208,8 @@ class MiroWorld(object):
         active = [g for g in self.goals if not g.done()]
         if not active:
             return
-        goal = active[-1]
-        dx, dy = goal.target[0] - self.x, goal.target[1] - self.y
-        dist = math.hypot(dx, dy)
-        step = min(dist, self.speed * dt)
-        if dist > 0:
-            self.x += dx / dist * step
-            self.y += dy / dist * step
-        if dist - step < 0.05:
-            goal.state = 'succeeded'
+        step_towards(self, active[-1], self.speed, dt, 0.05)
+        if active[-1].succeeded():
             self.clock.notify()
 
     def arrivals(self):

@@ -10,16 +10,13 @@ from std_msgs.msg import Bool, String
 
 from exp_assignment2.behaviour.ball import BallCommands
 from exp_assignment2.nodes.move_ball_around import AUTO_TOPIC
-from exp_assignment2.ros.actions import PlanningClient
-from exp_assignment2.ros.clock import RosClock
+from exp_assignment2.ros.actions import start_client
 from exp_assignment2.ros.log import RosLog, refusal_log
 
 
 def main():
-    rospy.init_node('human_commands')
-    clock = RosClock()
-    ball = PlanningClient('/reaching_goal', clock)
-    if not ball.wait_for_server():
+    _, ball = start_client('human_commands', '/reaching_goal')
+    if ball is None:
         return
     auto_pub = rospy.Publisher(AUTO_TOPIC, Bool, queue_size=1, latch=True)
     where = {}

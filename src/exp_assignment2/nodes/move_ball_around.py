@@ -11,18 +11,15 @@ import rospy
 from std_msgs.msg import Bool
 
 from exp_assignment2.behaviour.ball import BallRoutine
-from exp_assignment2.ros.actions import PlanningClient
-from exp_assignment2.ros.clock import RosClock
+from exp_assignment2.ros.actions import start_client
 from exp_assignment2.ros.log import RosLog
 
 AUTO_TOPIC = '/ball/auto'
 
 
 def main():
-    rospy.init_node('move_ball_around')
-    clock = RosClock()
-    ball = PlanningClient('/reaching_goal', clock)
-    if not ball.wait_for_server():
+    clock, ball = start_client('move_ball_around', '/reaching_goal')
+    if ball is None:
         return
     routine = BallRoutine(
         clock, ball, random.Random(rospy.get_param('~seed', 1)), RosLog(),

@@ -12,6 +12,7 @@ from actionlib_msgs.msg import GoalStatus
 
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
+from exp_assignment2.ros.clock import RosClock
 
 
 class ActionGoal(object):
@@ -63,3 +64,12 @@ class PlanningClient(object):
     def go_to(self, x, y, z=0.0):
         """Send a goal; returns its :class:`ActionGoal`."""
         return ActionGoal(self.client, make_goal(x, y, z, stamp=rospy.Time.now()), self.clock)
+
+
+def start_client(node, action):
+    """Start ``node`` with a clock and a client of ``action`` whose server is up:
+    (clock, client), or (clock, None) when ROS shut down first."""
+    rospy.init_node(node)
+    clock = RosClock()
+    client = PlanningClient(action, clock)
+    return clock, client if client.wait_for_server() else None
