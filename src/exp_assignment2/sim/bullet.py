@@ -1,15 +1,19 @@
-"""pybullet, imported once with its start-up banner silenced.
+"""pybullet, imported once with its chatter silenced.
 
 pybullet writes "pybullet build time: ..." to the process's stderr from C
-when it is imported; a ROS user's launch output should show none of the
-physics engine's chatter, so the import runs with file descriptors 1 and 2
-pointed at /dev/null (import errors still arrive, as Python exceptions).
+when it is imported, and its EGL plugin prints its GL details when loaded
+and unloaded; a ROS user's launch output should show none of the physics
+engine's chatter. :func:`quiet` points file descriptors 1 and 2 at /dev/null
+for such a call (errors still arrive, as Python exceptions).
 """
+import contextlib
 import os
 import sys
 
 
-def _quiet_import():
+@contextlib.contextmanager
+def quiet():
+    """Silence what C code writes to stdout and stderr inside the block."""
     sys.stdout.flush()
     sys.stderr.flush()
     devnull = os.open(os.devnull, os.O_WRONLY)
@@ -17,13 +21,13 @@ def _quiet_import():
     os.dup2(devnull, 1)
     os.dup2(devnull, 2)
     try:
-        import pybullet
+        yield
     finally:
         for fd, copy in zip((1, 2), saved):
             os.dup2(copy, fd)
             os.close(copy)
         os.close(devnull)
-    return pybullet
 
 
-p = _quiet_import()
+with quiet():
+    import pybullet as p  # noqa: E402  (imported here, silenced)

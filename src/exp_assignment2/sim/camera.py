@@ -11,7 +11,6 @@ camera's worker thread and returns the BGR image. Backends:
   single-threaded), finish only converts the colours.
 """
 import math
-import pkgutil
 
 import cv2
 import numpy as np
@@ -60,17 +59,13 @@ class PybulletRenderer(object):
     """pybullet's TinyRenderer (CPU) or its EGL plugin."""
 
     def __init__(self, physics, kind):
-        self.physics, self.name, self._plugin = physics, kind, None
+        self.physics, self.name = physics, kind
         self._renderer = p.ER_TINY_RENDERER
         if kind == 'egl':
-            loader = pkgutil.get_loader('eglRenderer')
-            plugin = -1
-            if loader is not None:
-                plugin = p.loadPlugin(loader.get_filename(), '_eglRendererPlugin',
-                                      physicsClientId=physics.client)
-            if plugin < 0:
-                raise RuntimeError("pybullet's EGL renderer plugin did not load")
-            self._plugin, self._renderer = plugin, p.ER_BULLET_HARDWARE_OPENGL
+            if physics.egl_plugin is None:
+                raise RuntimeError('the egl renderer needs Physics(egl=True): the plugin '
+                                   'only draws bodies loaded after it')
+            self._renderer = p.ER_BULLET_HARDWARE_OPENGL
 
     def start(self):
         pass
@@ -98,8 +93,7 @@ class PybulletRenderer(object):
         return cv2.cvtColor(job, cv2.COLOR_RGBA2BGR)
 
     def close(self):
-        if self._plugin is not None:
-            p.unloadPlugin(self._plugin, physicsClientId=self.physics.client)
+        pass    # the plugin, if any, belongs to the physics
 
 
 RENDERERS = ('gl', 'egl', 'tiny')

@@ -7,10 +7,11 @@ so what is published is what ``robot_state_publisher`` and rviz expect.
 """
 import math
 import os
+import pkgutil
 import tempfile
 
 import numpy as np
-from exp_assignment2.sim.bullet import p
+from exp_assignment2.sim.bullet import p, quiet
 
 from exp_assignment2.geometry import all_finite
 from exp_assignment2.sim import urdf
@@ -38,9 +39,11 @@ class Physics(object):
     :param world: :class:`~exp_assignment2.sim.world.WorldSpec`
     :param urdf_text: ``urdf_text(spec)`` gives a model's URDF text
     :param time_step: physics step (s of simulated time)
+    :param egl: load pybullet's EGL renderer plugin (it only draws bodies
+        loaded after it, so it comes first)
     """
 
-    def __init__(self, world, urdf_text, time_step=0.01):
+    def __init__(self, world, urdf_text, time_step=0.01, egl=False):
         if not (time_step > 0 and math.isfinite(time_step)):
             raise ValueError('time_step must be positive, got %r' % (time_step,))
         self.world, self.time_step, self.steps = world, float(time_step), 0
@@ -49,6 +52,7 @@ class Physics(object):
         p.setTimeStep(self.time_step, physicsClientId=self.client)
         self._tmp = tempfile.TemporaryDirectory(prefix='exp_assignment2_')
         self._texture = None
+        self.egl_plugin = self._load_egl() if egl else None
         self.bodies = {}
         for spec in world.models:
             self.bodies[spec.name] = self._load(spec, urdf_text(spec))
@@ -86,6 +90,17 @@ class Physics(object):
             p.changeVisualShape(body_id, -1, textureUniqueId=self._texture,
                                 physicsClientId=self.client)
         return body
+
+    def _load_egl(self):
+        loader = pkgutil.get_loader('eglRenderer')
+        plugin = -1
+        if loader is not None:
+            with quiet():
+                plugin = p.loadPlugin(loader.get_filename(), '_eglRendererPlugin',
+                                      physicsClientId=self.client)
+        if plugin < 0:
+            raise RuntimeError("pybullet's EGL renderer plugin did not load")
+        return plugin
 
     def grid_texture(self):
         """pybullet's renderers draw the grid from a texture (1 m cells)."""
@@ -180,5 +195,8 @@ class Physics(object):
             self.place_kinematic(name)
 
     def close(self):
+        if self.egl_plugin is not None:
+            with quiet():
+                p.unloadPlugin(self.egl_plugin, physicsClientId=self.client)
         p.disconnect(self.client)
         self._tmp.cleanup()

@@ -1,0 +1,99 @@
+"""Rendering and vision figures of the benchmark, in-process (no ROS).
+
+Every renderer draws the default dog world (config/world_dog.yaml) through
+the simulator's own code: :mod:`exp_assignment2.sim.offline` builds the
+physics, the camera backends render from the robot's ``camera_link``.
+"""
+import statistics
+import time
+
+import cv2
+import numpy as np
+
+from exp_assignment2.sim.camera import CameraSpec, make_renderer
+from exp_assignment2.sim.offline import make_physics
+from exp_assignment2.sim.world import PLUGIN_OPTIONS
+from exp_assignment2.vision import BallDetector, decode_jpeg, encode_jpeg
+
+RENDERERS = ('gl', 'egl', 'tiny')
+
+
+def camera(size):
+    return CameraSpec('robot', dict(PLUGIN_OPTIONS['camera'], link='camera_link',
+                                    width=size, height=size))
+
+
+def median_ms(fn, frames, budget_s=3.0):
+    """Median wall time (ms) of fn() over up to ``frames`` calls (fewer if slow)."""
+    fn()   # warm-up
+    times, start = [], time.perf_counter()
+    while len(times) < frames and (len(times) < 5 or time.perf_counter() - start < budget_s):
+        t = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t)
+    return 1000.0 * statistics.median(times)
+
+
+class Scene(object):
+    """The dog world with one renderer backend, started in this thread."""
+
+    def __init__(self, kind):
+        self.physics = make_physics(egl=kind == 'egl')
+        self.backend = make_renderer(kind, self.physics)
+        self.backend.start()
+        self.physics.step()
+
+    def frame(self, cam):
+        """One BGR frame (a copy: the gl backend reuses its buffer)."""
+        return np.array(self.backend.finish(self.backend.capture(cam)))
+
+    def close(self):
+        self.backend.close()
+        self.physics.close()
+
+
+def bench_render(sizes, frames=60):
+    """ms per frame of each renderer and size: render (capture + finish, as the
+    simulator does), JPEG encode, and their sum."""
+    rows = []
+    for kind in RENDERERS:
+        scene = Scene(kind)
+        for size in sizes:
+            cam = camera(size)
+            render = median_ms(lambda: scene.backend.finish(scene.backend.capture(cam)),
+                               frames)
+            image = scene.frame(cam)
+            encode = median_ms(lambda: encode_jpeg(image, 80), frames)
+            rows.append(dict(renderer=kind, size=size, render_ms=render, encode_ms=encode,
+                             frame_ms=render + encode))
+        scene.close()
+    return rows
+
+
+def bench_vision(size, frames=200):
+    """ms to decode and detect the ball in real frames of the default scene."""
+    scene = Scene('gl')
+    cam, jpegs = camera(size), []
+    for _ in range(20):      # the ball at a few places in view
+        scene.physics.bodies['ball'].kinematic[1] -= 0.05
+        scene.physics.place_kinematic('ball')
+        jpegs.append(encode_jpeg(scene.frame(cam), 80))
+    scene.close()
+    detector, found = BallDetector(), []
+    ms = median_ms(lambda: found.append(detector.detect(decode_jpeg(jpegs[len(found) % 20]))
+                                        is not None), frames)
+    return dict(ms=ms, frames_with_ball=sum(found) / float(len(found)))
+
+
+def side_by_side(path, size=400):
+    """The same view drawn by gl, egl and tiny, labelled, in one PNG."""
+    panels = []
+    for kind in RENDERERS:
+        scene = Scene(kind)
+        image = scene.frame(camera(size))
+        scene.close()
+        cv2.putText(image, kind, (12, 40), cv2.FONT_HERSHEY_SIMPLEX, 1.2, (255, 255, 255), 5)
+        cv2.putText(image, kind, (12, 40), cv2.FONT_HERSHEY_SIMPLEX, 1.2, (20, 20, 20), 2)
+        panels.append(image)
+    cv2.imwrite(path, np.hstack(panels))
+    return path
