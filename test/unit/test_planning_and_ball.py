@@ -144,3 +144,14 @@ def test_hide_before_the_ball_position_is_known_is_refused():
     commands, ball, auto, refused = make_commands(position=None)
     assert commands.handle('hide') is None
     assert ball.goals == [] and 'not known yet' in refused[0]
+
+
+def test_the_routine_stops_quietly_when_ros_shuts_down():
+    clock = FakeClock()
+    ball = FakeBall(clock)
+    routine = BallRoutine(clock, ball, random.Random(1), RecordingLog())
+    clock.tickers.append(lambda t, dt: setattr(clock, 'shut', t >= 1.0))
+    routine.round()
+    assert len(ball.goals) == 1, 'no new goal once shut down'
+    assert routine.log.lines == [('info', 'move_ball_around: ball to (%.1f, %.1f)'
+                                  % ball.goals[0].target)]

@@ -1,43 +1,25 @@
 """The simulator's ROS-free parts on real pybullet physics: drives, limits,
 timeouts, the head, the ball's height, bounds and reset (no ROS)."""
 import math
-import os
 
 import pytest
-import yaml
 
 from exp_assignment2.geometry import yaw_of
 from exp_assignment2.sim.drives import DiffDrive, Height, JointPosition, PlanarMove
-from exp_assignment2.sim.physics import HIDDEN_Z, Physics
-from exp_assignment2.sim.world import parse_world
-
-ROOT = os.path.join(os.path.dirname(__file__), '..', '..')
-DESCRIPTIONS = {'/robot/robot_description': 'robot.urdf', '/ball_description': 'ball.urdf',
-                '/robot_description': 'miro.urdf'}
-
-
-def urdf_reader(robot='robot.urdf'):
-    def read(spec):
-        name = spec.urdf or DESCRIPTIONS[spec.description]
-        if spec.description == '/robot/robot_description':
-            name = robot
-        with open(os.path.join(ROOT, 'urdf', name)) as f:
-            return f.read()
-    return read
-
+from exp_assignment2.sim.offline import load_world, make_physics
+from exp_assignment2.sim.physics import HIDDEN_Z
 
 class Sim(object):
     """Physics plus the drives the world asks for, stepped by hand."""
 
-    def __init__(self, world='world_dog.yaml', robot='robot.urdf', cmd_timeout=None):
-        with open(os.path.join(ROOT, 'config', world)) as f:
-            self.world = parse_world(yaml.safe_load(f))
+    def __init__(self, world='world_dog.yaml', robot='rep103', cmd_timeout=None):
+        self.world = load_world(world)
         if cmd_timeout is not None:
             for model in self.world.models:
                 for name in ('diff_drive', 'planar_move'):
                     if name in model.plugins:
                         model.plugins[name]['cmd_timeout'] = cmd_timeout
-        self.physics = Physics(self.world, urdf_reader(robot))
+        self.physics = make_physics(self.world, robot)
         self.drives = {}
         for model in self.world.models:
             opts = model.plugins
@@ -87,7 +69,7 @@ def test_the_robot_spawns_where_the_world_says(dog):
     assert abs(turned(yaw, math.pi)) < 1e-3
 
 
-@pytest.mark.parametrize('robot,sign', [('robot.urdf', 1), ('robot_original.urdf', -1)])
+@pytest.mark.parametrize('robot,sign', [('rep103', 1), ('original', -1)])
 def test_positive_angular_z_turns_left_on_rep103_and_right_on_the_original(robot, sign):
     sim = Sim(robot=robot)
     try:

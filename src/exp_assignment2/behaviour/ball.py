@@ -47,11 +47,14 @@ class BallRoutine(object):
                 return False
             self.log.warn('move_ball_around: (%.1f, %.1f) not reached within %.0f s',
                           x, y, self.goal_timeout)
-        return self.enabled
+        return self._going()
 
     def _wait(self, seconds):
         self.clock.wait_until(lambda: not self.enabled, seconds)
-        return self.enabled
+        return self._going()
+
+    def _going(self):
+        return self.enabled and not self.clock.is_shutdown()
 
     def round(self):
         """One round: the moves, then the disappearance; stops early when paused."""

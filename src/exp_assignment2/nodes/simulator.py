@@ -37,13 +37,14 @@ class Simulator(object):
         self.params = dict(NODE_PARAMS, **{k: v for k, v in params.items() if k in NODE_PARAMS})
         self.world = parse_world({k: v for k, v in params.items() if k not in NODE_PARAMS})
         self._apply_overrides()
-        self.physics = Physics(self.world, self._urdf_text, float(self.params['time_step']))
+        self.renderer_kind = str(self.params['renderer'])
+        self.physics = Physics(self.world, self._urdf_text, float(self.params['time_step']),
+                               egl=self.renderer_kind == 'egl')
         self.pacer = Pacer(float(self.params['real_time_factor']))
         self.pending = collections.deque()      # work queued by callbacks
         self.stop = threading.Event()
         self.paused = bool(self.params['paused'])
         self.drives, self.frame_worker = {}, None
-        self.renderer_kind = str(self.params['renderer'])
         self.camera_overrides = {key: self.params['camera_' + key]
                                  for key in ('width', 'height', 'rate', 'hfov')
                                  if self.params['camera_' + key] is not None}
