@@ -1,0 +1,5 @@
+#!/usr/bin/env python3
+"""JPEG CompressedImage -> raw Image for rviz (Debian has no compressed_image_transport)."""
+from exp_assignment2.nodes.image_decompress import main
+
+main()
