@@ -20,6 +20,7 @@ VoiceCommand = namedtuple('VoiceCommand', 'kind x y')    # kind: play go_to
 MotionCommand = namedtuple('MotionCommand', 'kind x y')  # kind: go_home go_rand go_to
 
 QUOTE_LIMIT = 80
+NUMBER_LIMIT = 20       # characters in one number: no 5000-digit "1" reaches int()
 _SEPARATORS = re.compile(r'[ \t]+')
 _DECIMAL = re.compile(r'[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)')
 _INTEGER = re.compile(r'[+-]?[0-9]+')
@@ -66,6 +67,9 @@ def _go_to(words, text, usage, number, kind, check, bounds):
         raise CommandError('%s is not a command; %s' % (quote(text), usage))
     if not (number.fullmatch(words[2]) and number.fullmatch(words[3])):
         raise CommandError('%s: X and Y must be %s; %s' % (quote(text), kind, usage))
+    if max(len(words[2]), len(words[3])) > NUMBER_LIMIT:
+        raise CommandError('%s: X and Y must be %s of at most %d characters; %s'
+                           % (quote(text), kind, NUMBER_LIMIT, usage))
     x, y = (float(w) if number is _DECIMAL else int(w) for w in words[2:])
     if not check(x, y):
         raise CommandError('%s: (%s, %s) is outside %s; %s'

@@ -122,3 +122,17 @@ def test_parse_or_refuse_reports_the_reason_once():
 def test_format_go_to_round_trips_through_the_parsers():
     assert parse_voice(format_go_to(6, 2)) == ('go_to', 6, 2)
     assert parse_ball_command(format_go_to(-2.5, 3.0))[1:] == (-2.5, 3.0)
+
+
+@pytest.mark.parametrize('parser', [parse_ball_command, parse_voice, parse_motion_command])
+def test_a_number_of_thousands_of_digits_is_refused_not_a_crash(parser):
+    # int() refuses strings of over 4300 digits with a plain ValueError
+    text = 'go to %s1 2' % ('0' * 5000)
+    with pytest.raises(CommandError) as err:
+        parser(text)
+    assert 'at most 20 characters' in str(err.value) and '(5009 chars)' in str(err.value)
+
+
+@pytest.mark.parametrize('parser', [parse_ball_command, parse_voice, parse_motion_command])
+def test_leading_zeros_are_still_a_number(parser):
+    assert tuple(parser('go to 0003 +02'))[1:] == (3, 2)

@@ -9,7 +9,7 @@ import rospy
 from exp_assignment2.control import GoToPoint
 from exp_assignment2.planning import RobotGoalController
 from exp_assignment2.ros.clock import RosClock
-from exp_assignment2.ros.dog import turn_sign
+from exp_assignment2.ros.robot_model import turn_sign
 from exp_assignment2.ros.planning_server import RobotPlanningServer
 
 

@@ -1,7 +1,8 @@
 """``print_info``: logs MiRo's state changes, commands, targets and arrivals.
 
 Only commands the grounding node accepts are echoed (it logs the refusals,
-throttled), so a flood of bad input does not flood this log either.
+throttled), so a flood of bad input does not flood this log either; what is
+echoed is quoted to 80 characters.
 """
 import rospy
 from std_msgs.msg import Float64MultiArray, Int64MultiArray, String
@@ -15,7 +16,7 @@ def on_command(msg):
         parse_motion_command(msg.data)
     except CommandError:
         return
-    rospy.loginfo('command: %s', msg.data.strip())
+    rospy.loginfo('command: %s', quote(msg.data.strip()))
 
 
 def on_state(msg):

@@ -8,7 +8,8 @@ import rospy
 
 from exp_assignment2.control import BallFollower
 from exp_assignment2.ros.clock import RosClock
-from exp_assignment2.ros.dog import CommandPublisher, RosDogEyes, turn_sign
+from exp_assignment2.ros.dog import CommandPublisher, RosDogEyes
+from exp_assignment2.ros.robot_model import turn_sign
 
 
 def main():

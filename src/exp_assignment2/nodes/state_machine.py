@@ -13,8 +13,9 @@ from std_msgs.msg import String
 from exp_assignment2.behaviour.dog import Dog, DogParams, build_state_machine
 from exp_assignment2.ros.actions import PlanningClient
 from exp_assignment2.ros.clock import RosClock
-from exp_assignment2.ros.dog import RosDogBody, RosDogEyes, turn_sign
+from exp_assignment2.ros.dog import RosDogBody, RosDogEyes
 from exp_assignment2.ros.log import RosLog
+from exp_assignment2.ros.robot_model import turn_sign
 from exp_assignment2.smach_api import report_active_state
 
 

@@ -13,35 +13,14 @@ from geometry_msgs.msg import Twist
 from sensor_msgs.msg import CompressedImage
 from std_msgs.msg import Float64
 
-from exp_assignment2.sim import urdf
-from exp_assignment2.vision import BallDetector, annotate, decode_jpeg, encode_jpeg
+from exp_assignment2.ros.frames import decode_frame
+from exp_assignment2.vision import BallDetector, annotate, encode_jpeg
 
 CAMERA_TOPIC = '/robot/camera1/image_raw/compressed'
 OUTPUT_TOPIC = '/output/image_raw/compressed'
 CMD_TOPIC = '/robot/cmd_vel'
 HEAD_TOPIC = '/robot/joint_position_controller/command'
-TURN_SIGN_PARAM = '/robot/turn_sign'
-DESCRIPTION_PARAM = '/robot/robot_description'
 HOLD_PERIOD = 0.1   # s: a held command is repeated so the drive's cmd_timeout keeps it
-
-
-def turn_sign():
-    """+1 when +angular.z turns the robot left (REP 103), -1 for the original
-    robot. The simulator sets ``/robot/turn_sign`` when it loads the robot; a
-    node that starts first reads the same wiring from ``/robot/robot_description``
-    (loaded by the launch file before any node runs)."""
-    sign = rospy.get_param(TURN_SIGN_PARAM, None)
-    if sign in (1, -1):
-        return sign
-    text = rospy.get_param(DESCRIPTION_PARAM, None)
-    if text:
-        try:
-            return urdf.diff_drive_turn_sign(urdf.parse(text))
-        except ValueError as exc:
-            rospy.logwarn('%s: %s: %s', rospy.get_name(), DESCRIPTION_PARAM, exc)
-    rospy.logwarn('%s: neither %s nor a diff-drive robot description; assuming +1 (REP 103)',
-                  rospy.get_name(), TURN_SIGN_PARAM)
-    return 1
 
 
 class CommandPublisher(object):
@@ -136,9 +115,8 @@ class RosDogEyes(object):
         self.servo = servo
 
     def _on_image(self, msg):
-        bgr = decode_jpeg(msg.data)
+        bgr = decode_frame(msg, 'camera')
         if bgr is None:
-            rospy.logwarn_throttle(10.0, 'camera: a frame could not be decoded')
             return
         ball = self.detector.detect(bgr)
         if ball is not None:

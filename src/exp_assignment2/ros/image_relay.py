@@ -10,7 +10,7 @@ import threading
 import rospy
 from sensor_msgs.msg import CompressedImage, Image
 
-from exp_assignment2.vision import decode_jpeg
+from exp_assignment2.ros.frames import decode_frame
 
 
 class Decompressor(rospy.SubscribeListener):
@@ -38,9 +38,8 @@ class Decompressor(rospy.SubscribeListener):
                 self.sub = None
 
     def _on_image(self, msg):
-        bgr = decode_jpeg(msg.data)
+        bgr = decode_frame(msg, 'image_decompress')
         if bgr is None:
-            rospy.logwarn_throttle(5.0, 'image_decompress: a frame that is not a JPEG image')
             return
         h, w = bgr.shape[:2]
         self.pub.publish(Image(header=msg.header, height=h, width=w, encoding='bgr8',

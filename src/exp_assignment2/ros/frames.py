@@ -1,0 +1,13 @@
+"""Camera frames as a node receives them."""
+import rospy
+
+from exp_assignment2.vision import decode_jpeg
+
+
+def decode_frame(msg, who):
+    """The BGR image of a JPEG ``CompressedImage``; None, with a warning
+    naming ``who`` (at most one every 10 s), when it is not one."""
+    bgr = decode_jpeg(msg.data)
+    if bgr is None:
+        rospy.logwarn_throttle(10.0, '%s: a frame that is not a JPEG image' % who)
+    return bgr
