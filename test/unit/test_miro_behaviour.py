@@ -130,6 +130,18 @@ def test_silence_follows_the_pointed_place():
     assert world.arrivals() == [(4, 4), (8, 2)]
 
 
+def test_a_gesture_made_on_the_way_to_the_person_is_followed():
+    clock, world, miro = make_miro(loops=1, listen_time=2.0)
+
+    def point_on_the_way(now, dt):
+        if now >= 1.0 and miro.person.gesture is None:    # 7 s from (0, 0) to (5, 5)
+            miro.person.saw_gesture((4, 4), (8, 2))
+    clock.tickers.append(point_on_the_way)
+    assert MiroPlay(miro).execute(None) == 'normal'
+    assert [t for _, _, t in world.commands] == [(5, 5), (8, 2)]
+    assert 'points at (8, 2)' in miro.log.text()
+
+
 def test_play_obeys_loops_orders_then_returns_to_normal():
     clock, world, miro = make_miro(loops=3, listen_time=1.0)
     miro.person.saw_gesture((5, 5), (7, 7))

@@ -134,6 +134,8 @@ class MiroPlay(smach.State):
                 miro.log.info('PLAY: called again; waiting')
                 miro.clock.sleep(p.wait_time)
                 continue
+            if cmd is None:                    # a gesture made on the way counts
+                point = miro.person.pointing(point)
             target = (cmd.x, cmd.y) if cmd is not None else point
             if target is None:
                 miro.log.info('PLAY: the person says nothing and points nowhere; waiting')

@@ -123,6 +123,11 @@ class Person(object):
         with self.lock:
             self.gesture = (tuple(person), tuple(point))
 
+    def pointing(self, fallback=None):
+        """Where the last real gesture points, else ``fallback``."""
+        with self.lock:
+            return self.gesture[1] if self.gesture is not None else fallback
+
     def look(self):
         """((px, py), (gx, gy) or None): the last real gesture; else a simulated
         one; else the configured place, pointing nowhere."""
