@@ -2,10 +2,11 @@
 (sensor_msgs/Image), while someone subscribes; rviz.launch remaps them."""
 import rospy
 
+from exp_assignment2.ros.ending import run_until_shutdown
 from exp_assignment2.ros.image_relay import Decompressor
 
 
 def main():
     rospy.init_node('image_decompress')
     Decompressor()
-    rospy.spin()
+    run_until_shutdown(rospy.spin)

@@ -9,6 +9,7 @@ import rospy
 from exp_assignment2.control import BallFollower
 from exp_assignment2.ros.clock import RosClock
 from exp_assignment2.ros.dog import CommandPublisher, RosDogEyes
+from exp_assignment2.ros.ending import run_until_shutdown
 from exp_assignment2.ros.robot_model import turn_sign
 
 
@@ -22,4 +23,4 @@ def main():
     eyes = RosDogEyes(RosClock(), float(rospy.get_param('~min_radius_at_800', 10.0)),
                       gui=bool(rospy.get_param('~gui', False)))
     eyes.follow(lambda ball, width: wheels.drive(*follower.command(ball, width)))
-    rospy.spin()
+    run_until_shutdown(rospy.spin)

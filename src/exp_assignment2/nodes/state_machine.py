@@ -14,6 +14,7 @@ from exp_assignment2.behaviour.dog import Dog, DogParams, build_state_machine
 from exp_assignment2.ros.actions import PlanningClient
 from exp_assignment2.ros.clock import RosClock
 from exp_assignment2.ros.dog import RosDogBody, RosDogEyes
+from exp_assignment2.ros.ending import run_until_shutdown
 from exp_assignment2.ros.log import RosLog
 from exp_assignment2.ros.robot_model import turn_sign
 from exp_assignment2.smach_api import report_active_state
@@ -42,4 +43,4 @@ def main():
         state_pub.publish(String(label))
     sm = build_state_machine(dog)
     report_active_state(sm, report)
-    sm.execute()
+    run_until_shutdown(sm.execute)

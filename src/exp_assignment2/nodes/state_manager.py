@@ -13,6 +13,7 @@ from exp_assignment2 import grid
 from exp_assignment2.behaviour.miro import STATE_PARAM, Miro, MiroParams, build_state_machine
 from exp_assignment2.behaviour.person import Ears, Person, SimulatedPerson
 from exp_assignment2.ros.clock import RosClock
+from exp_assignment2.ros.ending import run_until_shutdown
 from exp_assignment2.ros.log import RosLog, refusal_log
 from exp_assignment2.ros.miro import RosMiroBody, listen
 from exp_assignment2.smach_api import report_active_state
@@ -46,4 +47,4 @@ def main():
         state_pub.publish(String(STATE_PARAM[label]))
     sm = build_state_machine(miro)
     report_active_state(sm, report)
-    sm.execute()
+    run_until_shutdown(sm.execute)
