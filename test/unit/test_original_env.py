@@ -100,32 +100,6 @@ def test_original_style_state_machine_runs_on_the_shims():
     assert 'smach: shim' in env['EXP2_ORIGINAL_ENV']
 
 
-def test_gazebo_msgs_state_messages_match_gazebos():
-    env = base_env()
-    if run('import genpy, geometry_msgs.msg', env).returncode != 0:
-        pytest.skip("Debian's genpy and geometry_msgs are not installed")
-    env = original_env(env)
-    proc = run('''
-        import io
-        from geometry_msgs.msg import Point, Pose
-        from gazebo_msgs.msg import LinkState, LinkStates, ModelState, ModelStates
-        for cls in (LinkState, LinkStates, ModelState, ModelStates):
-            print(cls._type, cls._md5sum)
-        buff = io.BytesIO()
-        LinkState(link_name='ball::link', pose=Pose(position=Point(1, 2, 3))).serialize(buff)
-        back = LinkState().deserialize(buff.getvalue())
-        print(back.link_name, back.pose.position.z, type(back.pose) is Pose)
-    ''', env)
-    assert proc.returncode == 0, proc.stderr
-    # the md5sums of Gazebo's own gazebo_msgs (ROS 1)
-    assert proc.stdout.splitlines() == [
-        'gazebo_msgs/LinkState 0818ebbf28ce3a08d48ab1eaa7309ebe',
-        'gazebo_msgs/LinkStates 48c080191eb15c41858319b4d8a609c2',
-        'gazebo_msgs/ModelState 9330fd35f2fcd82d457e54bd54e10593',
-        'gazebo_msgs/ModelStates 48c080191eb15c41858319b4d8a609c2',
-        'ball::link 3.0 True']
-
-
 def test_nothing_leaks_into_the_default_environment():
     env = base_env()
     if run('import smach', env).returncode == 0:

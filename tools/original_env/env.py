@@ -6,7 +6,7 @@ the environment it will inherit (workspace sourced). It prints shell
 
 * PYTHONPATH: gui/ first (sitecustomize.py: cv2 HighGUI on one thread), then
   what was there, then one shim directory per module that does not import
-  *now*: smach, smach_ros, gazebo_msgs. Each is checked in a fresh interpreter
+  *now*: smach, smach_ros. Each is checked in a fresh interpreter
   with the shims decided so far (smach_ros needs a smach), so a real module
   is never shadowed; the shims also come last.
 * PATH: $EXP2_ORIGINAL_BIN (where shell.sh links ``python`` to /usr/bin/python3,
@@ -26,7 +26,6 @@ PYTHON = '/usr/bin/python3'
 SHIMS = (
     ('smach', os.path.join(HERE, 'shims', 'smach')),
     ('smach_ros', os.path.join(HERE, 'shims', 'smach_ros')),
-    ('gazebo_msgs.msg', os.path.join(HERE, 'shims', 'gazebo_msgs')),
 )
 
 

@@ -8,7 +8,7 @@
 # imutils from PyPI), sources the catkin workspace, and sets PYTHONPATH so
 # that cv2's HighGUI runs on one thread (the original calls cv2.imshow from
 # several rospy callback threads, which hangs Debian's Qt-based OpenCV) and
-# smach / smach_ros / gazebo_msgs fall back to small replacements only where
+# smach / smach_ros fall back to small replacements only where
 # the real module does not import. See tools/original_env/README.md.
 set -eo pipefail
 
@@ -55,7 +55,7 @@ mkdir -p "$EXP2_ORIGINAL_BIN"
 ln -sfn /usr/bin/python3 "$EXP2_ORIGINAL_BIN/python"
 
 # Decided now, with the real interpreter and the workspace's PYTHONPATH, so a
-# real smach (or smach_ros, gazebo_msgs) is never shadowed.
+# real smach (or smach_ros) is never shadowed.
 eval "$(/usr/bin/python3 "$HERE/env.py")"
 log "enabled: $EXP2_ORIGINAL_ENV"
 
