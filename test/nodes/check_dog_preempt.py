@@ -1,10 +1,15 @@
 #!/usr/bin/env python3
 """Scenario A: while the dog wanders to a random goal, the ball appears
-ahead of it; the robot goal is preempted and the dog plays."""
+ahead of it (put there through Gazebo's /gazebo/set_model_state, so it is
+there at once whatever the robot's speed); the robot goal is preempted and
+the dog plays."""
 import math
 
+import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
+from gazebo_msgs.msg import ModelState
+from gazebo_msgs.srv import SetModelState
 
 from checks import DogCheck, Watch, clock, wait_until
 from exp_assignment2.msg import PlanningActionGoal, PlanningActionResult
@@ -28,7 +33,11 @@ class TestDogPreempt(DogCheck):
         ahead = (max(-7.5, min(7.5, x + 3.0 * math.cos(yaw))),
                  max(-7.5, min(7.5, y + 3.0 * math.sin(yaw))))
         active = self.goals.msg.goal_id.id
-        self.tell_the_ball('go to %.2f %.2f' % ahead)
+        state = ModelState(model_name='ball')
+        state.pose.position.x, state.pose.position.y, state.pose.position.z = ahead + (0.5,)
+        rospy.wait_for_service('/gazebo/set_model_state', 10.0)
+        answer = rospy.ServiceProxy('/gazebo/set_model_state', SetModelState)(state)
+        self.assertTrue(answer.success, answer.status_message)
         self.assertTrue(wait_until(lambda: self.dog.state() == 'PLAY', 40.0),
                         'states: %s' % self.dog.states)
 

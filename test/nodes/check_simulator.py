@@ -9,6 +9,7 @@ import unittest
 import rospy
 import rostest
 import tf2_ros
+from gazebo_msgs.msg import LinkState
 from geometry_msgs.msg import Twist
 from rosgraph_msgs.msg import Log
 from sensor_msgs.msg import CameraInfo, CompressedImage, JointState
@@ -43,7 +44,7 @@ class TestSimulator(unittest.TestCase):
         cls.cmd = rospy.Publisher('/robot/cmd_vel', Twist, queue_size=1)
         cls.head = rospy.Publisher('/robot/joint_position_controller/command', Float64,
                                    queue_size=1)
-        cls.height = rospy.Publisher('/ball/height_controller/command', Float64, queue_size=1)
+        cls.link_state = rospy.Publisher('/gazebo/set_link_state', LinkState, queue_size=1)
         cls.odom, cls.ball = Pose('/robot/odom'), Pose('/ball/odom')
         cls.joints = Watch('/robot/joint_states', JointState)
         cls.image = Watch('/robot/camera1/image_raw/compressed', CompressedImage)
@@ -51,7 +52,7 @@ class TestSimulator(unittest.TestCase):
         cls.rosout = Rosout()
         cls.tf = tf2_ros.Buffer()
         cls.tf_listener = tf2_ros.TransformListener(cls.tf)
-        for pub in (cls.cmd, cls.head, cls.height):
+        for pub in (cls.cmd, cls.head, cls.link_state):
             wait_for_subscribers(pub)
         cls.image.next(30)
 
@@ -77,14 +78,21 @@ class TestSimulator(unittest.TestCase):
         self.assertIsNotNone(ball, 'the ball at (-7, 6) is in front of the robot at spawn')
         self.assertGreater(ball.radius, 50)
 
+    def set_ball_height(self, z):
+        """As the original's ball server: /gazebo/set_link_state on ball_link."""
+        x, y, _, _ = self.ball.xyzyaw()
+        state = LinkState(link_name='ball_link')
+        state.pose.position.x, state.pose.position.y, state.pose.position.z = x, y, z
+        self.link_state.publish(state)
+
     def test_a_ball_under_the_ground_or_20_m_up_is_not_seen(self):
         for z in (-1.0, 20.0):
-            self.height.publish(Float64(z))
+            self.set_ball_height(z)
             self.assertTrue(wait_until(lambda: abs(self.ball.msg.pose.pose.position.z - z)
                                        < 1e-6, 5.0))
             moved = self.ball.msg.header.stamp.to_sec()
             self.assertIsNone(ball_in(self.image.after(moved)), 'ball at z = %g' % z)
-        self.height.publish(Float64(0.5))
+        self.set_ball_height(0.5)
         self.assertTrue(wait_until(lambda: self.ball.msg.pose.pose.position.z == 0.5, 5.0))
         self.assertIsNotNone(ball_in(self.image.after(self.ball.msg.header.stamp.to_sec())))
 

@@ -7,11 +7,10 @@ import time
 import numpy as np
 import pytest
 
-from exp_assignment2.sim import gl_backend
 from exp_assignment2.sim.camera import CameraSpec
-from exp_assignment2.sim.offline import make_physics
-from exp_assignment2.sim.plugins.camera import FrameWorker
-from exp_assignment2.sim.world import PLUGIN_OPTIONS
+from exp_assignment2.sim.gl import backend as gl_backend
+from exp_assignment2.sim.offline import make_engine
+from exp_assignment2.sim.plugins.frame_worker import FrameWorker
 
 
 class Recorder(object):
@@ -25,22 +24,36 @@ class Recorder(object):
         self.threads.add(threading.current_thread().name)
 
 
+class Lines(object):
+    """A host logger that keeps its lines."""
+
+    def __init__(self):
+        self.lines = []
+
+    def info(self, text):
+        pass
+
+    def warn(self, text):
+        self.lines.append(text)
+
+    error = warn
+
+
 @pytest.fixture
-def physics():
-    ph = make_physics()
-    ph.step()
-    yield ph
-    ph.close()
+def engine():
+    eng = make_engine(log=Lines())
+    eng.step()
+    yield eng
+    eng.close()
 
 
 def spec(size=64):
-    return CameraSpec('robot', dict(PLUGIN_OPTIONS['camera'], link='camera_link', width=size,
-                                    height=size))
+    return CameraSpec('robot', 'camera_link', width=size, height=size, hfov=80.0)
 
 
 @pytest.mark.parametrize('kind', ['gl', 'tiny'])
-def test_frames_finish_on_the_worker_thread_in_order(physics, kind):
-    worker, camera = FrameWorker(kind, physics), Recorder()
+def test_frames_finish_on_the_worker_thread_in_order(engine, kind):
+    worker, camera = FrameWorker(kind, engine.handle), Recorder()
     for stamp in range(5):
         worker.submit(camera, stamp, worker.backend.capture(spec()))
     worker.close()
@@ -50,13 +63,12 @@ def test_frames_finish_on_the_worker_thread_in_order(physics, kind):
     assert worker.backend.name == kind
 
 
-def test_gl_that_cannot_start_falls_back_to_tiny_with_one_line(physics, monkeypatch):
-    lines = []
+def test_gl_that_cannot_start_falls_back_to_tiny_with_one_line(engine, monkeypatch):
+    lines = engine.log.lines
+    del lines[:]             # what the spawns said
     monkeypatch.setattr(gl_backend.GLBackend, 'start', lambda self: (_ for _ in ()).throw(
         RuntimeError('gl renderer unavailable: no EGL here\nsecond line')))
-    import rospy
-    monkeypatch.setattr(rospy, 'logwarn', lambda fmt, *a: lines.append(fmt % a if a else fmt))
-    worker, camera = FrameWorker('gl', physics), Recorder()
+    worker, camera = FrameWorker('gl', engine.handle), Recorder()
     worker.submit(camera, 0, worker.backend.capture(spec()))
     worker.close()
     assert worker.backend.name == 'tiny' and len(camera.frames) == 1
@@ -64,8 +76,8 @@ def test_gl_that_cannot_start_falls_back_to_tiny_with_one_line(physics, monkeypa
                      'using tiny instead']
 
 
-def test_the_hand_over_holds_one_frame_so_the_simulator_waits(physics, monkeypatch):
-    worker, camera = FrameWorker('tiny', physics), Recorder()
+def test_the_hand_over_holds_one_frame_so_the_simulator_waits(engine, monkeypatch):
+    worker, camera = FrameWorker('tiny', engine.handle), Recorder()
     release = threading.Event()
     slow = worker.backend.finish
     monkeypatch.setattr(worker.backend, 'finish', lambda job: (release.wait(5), slow(job))[1])
@@ -83,13 +95,13 @@ def test_the_hand_over_holds_one_frame_so_the_simulator_waits(physics, monkeypat
     assert [f[0] for f in camera.frames] == [0, 1, 2]
 
 
-def test_a_hidden_ball_is_not_drawn_by_gl(physics):
-    worker, camera = FrameWorker('gl', physics), Recorder()
+def test_a_hidden_ball_is_not_drawn_by_gl(engine):
+    worker, camera = FrameWorker('gl', engine.handle), Recorder()
     seen = []
     camera.publish = lambda stamp, bgr: seen.append(int(np.count_nonzero(
         (bgr[:, :, 1] > 100) & (bgr[:, :, 0] < 60) & (bgr[:, :, 2] < 60))))
     worker.submit(camera, 0, worker.backend.capture(spec(200)))
-    physics.bodies['ball'].hidden = True
+    engine.models['ball'].hidden = True
     worker.submit(camera, 1, worker.backend.capture(spec(200)))
     worker.close()
     assert seen[0] > 1000 and seen[1] == 0

@@ -6,7 +6,7 @@ import pytest
 import yaml
 
 from exp_assignment2.sim.pacing import Pacer
-from exp_assignment2.sim.world import PLUGIN_OPTIONS, parse_world
+from exp_assignment2.sim.world import parse_world
 
 CONFIG = os.path.join(os.path.dirname(__file__), '..', '..', 'config')
 
@@ -27,21 +27,19 @@ def test_the_shipped_worlds_parse(name):
 def test_the_dog_world_has_the_spec_s_models_and_places():
     with open(os.path.join(CONFIG, 'world_dog.yaml')) as f:
         spec = parse_world(yaml.safe_load(f))
-    robot, ball = spec.model('robot'), spec.model('ball')
-    assert robot.pose[:2] == (-5.0, 7.0) and robot.pose[3] == pytest.approx(math.pi, abs=1e-4)
+    models = {m.name: m for m in spec.models}
+    robot, ball = models['robot'], models['ball']
+    assert robot.pose[:2] == (-5.0, 7.0) and robot.pose[5] == pytest.approx(math.pi, abs=1e-4)
     assert ball.pose[:3] == (-7.0, 6.0, 0.5)
-    assert spec.model('human').pose[:2] == (-7.0, 7.0)
-    assert robot.drive == 'diff_drive' and ball.drive == 'planar_move'
-    assert robot.plugins['diff_drive']['max_linear'] == 2.0
-    assert robot.plugins['diff_drive']['max_angular'] == 3.0
-    assert ball.plugins['planar_move']['max_linear'] == 2.0
-    assert robot.topic('cmd_vel') == '/robot/cmd_vel'
+    assert models['human'].pose[:2] == (-7.0, 7.0)
+    assert robot.description_param() == '/robot/robot_description'
+    assert ball.description_param() == '/ball_description'
+    assert models['arena'].grid and not robot.grid
 
 
 @pytest.mark.parametrize('desc,key', [
     (world(nmae='x'), "'nmae'"),
-    (world(plugins={'diff_driv': {}}), "'diff_driv'"),
-    (world(plugins={'odometry': {'rte': 5}}), "'rte'"),
+    (world(plugins={'diff_drive': {}}), "<gazebo> tags"),
     ({'models': [], 'bound': [0, 1, 0, 1]}, "'bound'"),
 ])
 def test_an_unknown_key_is_an_error_that_names_it(desc, key):
@@ -53,14 +51,9 @@ def test_an_unknown_key_is_an_error_that_names_it(desc, key):
     (world(pose=[0, 0, 0]), 'pose must be'),
     (world(pose=[0, 0, 'a', 0]), 'must be a number'),
     (world(pose=[0, 0, float('nan'), 0]), 'must be finite'),
-    (world(plugins={'odometry': {'rate': -5}}), 'must be positive'),
-    (world(plugins={'odometry': {'rate': True}}), 'must be a number'),
-    (world(plugins={'planar_move': {'kinematic': 'yes'}}), 'true or false'),
-    (world(plugins={'diff_drive': {'cmd_timeout': -1}}), '>= 0'),
-    (world(plugins={'diff_drive': {}, 'planar_move': {}}), 'at most one drive'),
     (world(description='/p'), 'exactly one of'),
     ({'models': [{'name': 'a', 'urdf': 'x'}, {'name': 'a', 'urdf': 'y'}]}, 'unique'),
-    ({'models': []}, 'non-empty'),
+    ({'models': {}}, 'must be a list'),
     (dict(world(), bounds=[1, 0, 0, 1]), 'empty'),
 ])
 def test_malformed_worlds_are_refused_with_the_reason(desc, why):
@@ -68,11 +61,12 @@ def test_malformed_worlds_are_refused_with_the_reason(desc, why):
         parse_world(desc)
 
 
-def test_plugin_defaults_are_filled_in():
-    spec = parse_world(world(plugins={'camera': {'link': 'cam'}}))
-    camera = spec.models[0].plugins['camera']
-    assert camera == dict(PLUGIN_OPTIONS['camera'], link='cam')
-    assert (camera['width'], camera['height'], camera['rate']) == (800, 800, 30.0)
+def test_an_empty_world_is_a_world_and_poses_take_roll_and_pitch():
+    assert parse_world({}).models == []
+    spec = parse_world(world(pose=[1, 2, 3, 0.1, 0.2, 0.3], namespace='/robot2/'))
+    assert spec.models[0].pose == (1, 2, 3, 0.1, 0.2, 0.3)
+    assert spec.models[0].namespace == 'robot2'
+    assert parse_world(world(pose=[1, 2, 3, 4])).models[0].pose == (1, 2, 3, 0, 0, 4)
 
 
 class FakeWall(object):

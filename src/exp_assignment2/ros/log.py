@@ -5,7 +5,7 @@ from exp_assignment2.refusal import RefusalLog
 
 
 class RosLog(object):
-    """``info``/``warn`` with (fmt, *args), as :class:`~exp_assignment2.behaviour.interfaces.Log`."""
+    """``info``/``warn``/``error`` with (fmt, *args), as :class:`~exp_assignment2.behaviour.interfaces.Log`."""
 
     def __init__(self, prefix=''):
         self.prefix = prefix
@@ -15,6 +15,9 @@ class RosLog(object):
 
     def warn(self, fmt, *args):
         rospy.logwarn(self.prefix + fmt, *args)
+
+    def error(self, fmt, *args):
+        rospy.logerr(self.prefix + fmt, *args)
 
 
 def refusal_log(interface):

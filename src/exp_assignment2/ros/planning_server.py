@@ -12,7 +12,8 @@ import actionlib
 import rospy
 from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
-from std_msgs.msg import Float64
+from gazebo_msgs.msg import LinkState
+from gazebo_msgs.srv import SetLinkState
 
 from exp_assignment2.geometry import yaw_of
 from exp_assignment2.msg import PlanningAction, PlanningFeedback, PlanningResult
@@ -143,20 +144,33 @@ class RobotPlanningServer(PlanningServer):
 
 
 class BallPlanningServer(PlanningServer):
-    """``/reaching_goal``: the goal's z becomes the ball's height (below 0:
-    under the ground, as the original's set_link_state did), then the ball
-    moves to (x, y)."""
+    """``/reaching_goal``: the goal's z becomes the ball's height through
+    Gazebo's ``/gazebo/set_link_state``, as the original's server did (below 0:
+    under the ground; 20: far out of view), then the ball moves to (x, y)."""
 
-    HEIGHT_TOPIC = '/ball/height_controller/command'
+    LINK = 'ball::ball_link'
 
     def __init__(self, controller, clock):
         self.controller = controller
-        self.height_pub = rospy.Publisher(self.HEIGHT_TOPIC, Float64, queue_size=1, latch=True)
+        self.set_link_state = rospy.ServiceProxy('/gazebo/set_link_state', SetLinkState)
         PlanningServer.__init__(self, '/reaching_goal', '/ball/odom', '/ball/cmd_vel', clock,
                                 uses_z=True)
 
     def begin(self, target):
-        self.height_pub.publish(Float64(target.z))
+        at = self.odom.latest()[0].position
+        state = LinkState(link_name=self.LINK, reference_frame='world')
+        state.pose.position.x, state.pose.position.y, state.pose.position.z = at.x, at.y, target.z
+        state.pose.orientation.w = 1.0
+        try:
+            self.set_link_state.wait_for_service(5.0)
+            answer = self.set_link_state(state)
+        except (rospy.ROSException, rospy.ServiceException) as exc:
+            self._abort('cannot set the ball\'s height: %s' % exc, rospy.logerr)
+            return False
+        if not answer.success:
+            self._abort('the simulator refused the height: %s' % answer.status_message,
+                        rospy.logerr)
+            return False
         at_height = self.clock.wait_until(
             lambda: abs(self.odom.latest()[0].position.z - target.z) < 1e-3
             or self.server.is_preempt_requested(), 2.0)

@@ -1,9 +1,15 @@
 """The robot camera without ROS: intrinsics, pose and the renderers.
 
+:class:`CameraSpec` is a ``<sensor type="camera">`` as Gazebo reads it
+(update_rate, horizontal_fov, image width, height and format, clip), on its
+link, looking along the sensor frame's +x with +z up.
+
 A renderer backend splits a frame in two halves so that rendering can
 overlap physics: :meth:`capture` runs in the simulator's thread (the only
 one allowed to call pybullet) and returns a job; :meth:`finish` runs on the
-camera's worker thread and returns the BGR image. Backends:
+camera's worker thread and returns the BGR image. Backends draw the world a
+``source`` gives: ``source.scene()`` -> (generation, models), the
+generation changing whenever a model is spawned or deleted.
 
 * ``gl`` (default): the package's own OpenGL renderer (moderngl, EGL);
   capture reads every link pose in one batched query, finish draws.
@@ -16,23 +22,38 @@ import cv2
 import numpy as np
 from exp_assignment2.sim.bullet import p
 
+from exp_assignment2.sim.urdf import pose_matrix, rpy_matrix
+
+# Gazebo image formats -> (ROS encoding, channels)
+IMAGE_FORMATS = {'R8G8B8': 'rgb8', 'B8G8R8': 'bgr8', 'L8': 'mono8'}
+
 
 class CameraSpec(object):
-    """A pinhole camera on ``link`` looking along the link's +x, +z up."""
+    """A pinhole camera (see the module docstring).
 
-    def __init__(self, model, options):
-        self.model, self.link, self.name = model, options['link'], options['name']
-        if not self.link:
-            raise ValueError('model %s: camera needs a link' % model)
-        self.width, self.height = int(options['width']), int(options['height'])
-        self.rate, self.hfov = float(options['rate']), float(options['hfov'])
-        self.near, self.far = float(options['near']), float(options['far'])
-        self.jpeg_quality = int(options['jpeg_quality'])
+    :param offset: (x, y, z, roll, pitch, yaw) of the sensor in its link's frame
+    """
+
+    def __init__(self, model, link, name='camera1', width=320, height=240, rate=30.0,
+                 hfov=60.0, near=0.1, far=100.0, image_format='R8G8B8', jpeg_quality=80,
+                 offset=(0, 0, 0, 0, 0, 0)):
+        self.model, self.link, self.name = model, link, name
+        self.width, self.height = int(width), int(height)
+        self.rate, self.hfov = float(rate), float(hfov)
+        self.near, self.far = float(near), float(far)
+        self.jpeg_quality = int(jpeg_quality)
+        if image_format not in IMAGE_FORMATS:
+            raise ValueError('model %s: camera %s: image format %r is not one of %s'
+                             % (model, name, image_format, ', '.join(sorted(IMAGE_FORMATS))))
+        self.encoding = IMAGE_FORMATS[image_format]
         if not (0 < self.hfov < 180 and 0 < self.near < self.far and self.rate > 0
                 and self.width > 0 and self.height > 0):
-            raise ValueError('model %s: camera %dx%d, hfov %g, near %g, far %g, rate %g: '
-                             'out of range' % (model, self.width, self.height, self.hfov,
-                                               self.near, self.far, self.rate))
+            raise ValueError('model %s: camera %s %dx%d, hfov %g deg, near %g, far %g, rate %g:'
+                             ' out of range' % (model, name, self.width, self.height, self.hfov,
+                                                self.near, self.far, self.rate))
+        self.offset = np.eye(4)
+        self.offset[:3, :3] = rpy_matrix(*offset[3:])
+        self.offset[:3, 3] = offset[:3]
 
     @property
     def focal(self):
@@ -49,29 +70,30 @@ class CameraSpec(object):
         aspect = float(self.width) / self.height
         return math.degrees(2.0 * math.atan(math.tan(math.radians(self.hfov) / 2.0) / aspect))
 
-    def pose(self, physics):
-        """(position, 3x3 rotation) of the camera in the world."""
-        pos, quat = physics.link_pose(self.model, self.link)
-        return np.asarray(pos), np.array(p.getMatrixFromQuaternion(quat)).reshape(3, 3)
+    def frame(self, link_frame):
+        """4x4 world pose of the sensor, given its link's."""
+        return np.asarray(link_frame, float).dot(self.offset)
 
 
 class PybulletRenderer(object):
     """pybullet's TinyRenderer (CPU) or its EGL plugin."""
 
-    def __init__(self, physics, kind):
-        self.physics, self.name = physics, kind
+    def __init__(self, source, kind, client, egl_loaded=False):
+        self.source, self.name, self.client = source, kind, client
         self._renderer = p.ER_TINY_RENDERER
         if kind == 'egl':
-            if physics.egl_plugin is None:
-                raise RuntimeError('the egl renderer needs Physics(egl=True): the plugin '
-                                   'only draws bodies loaded after it')
+            if not egl_loaded:
+                raise RuntimeError('the egl renderer needs the physics world made with '
+                                   'egl=True: the plugin only draws bodies loaded after it')
             self._renderer = p.ER_BULLET_HARDWARE_OPENGL
 
     def start(self):
         pass
 
     def matrices(self, camera):
-        pos, rot = camera.pose(self.physics)
+        models = {m.name: m for m in self.source.scene()[1]}
+        frame = camera.frame(pose_matrix(*models[camera.model].link_pose(camera.link)))
+        pos, rot = frame[:3, 3], frame[:3, :3]
         view = p.computeViewMatrix(pos.tolist(), (pos + rot[:, 0]).tolist(), rot[:, 2].tolist())
         proj = p.computeProjectionMatrixFOV(camera.vertical_fov(),
                                             float(camera.width) / camera.height,
@@ -83,7 +105,7 @@ class PybulletRenderer(object):
         view, proj = self.matrices(camera)
         return p.getCameraImage(camera.width, camera.height, view, proj,
                                 renderer=self._renderer, flags=p.ER_NO_SEGMENTATION_MASK,
-                                physicsClientId=self.physics.client)
+                                physicsClientId=self.client)
 
     def capture(self, camera):
         rgba = self.render_raw(camera)[2]
@@ -99,12 +121,11 @@ class PybulletRenderer(object):
 RENDERERS = ('gl', 'egl', 'tiny')
 
 
-def make_renderer(kind, physics):
+def make_renderer(kind, source, client, egl_loaded=False):
     """The backend ``kind`` names; ValueError for an unknown name."""
     if kind not in RENDERERS:
         raise ValueError('renderer must be one of %s, got %r' % (', '.join(RENDERERS), kind))
     if kind == 'gl':
-        from exp_assignment2.sim.gl_backend import GLBackend
-        return GLBackend(physics)
-    return PybulletRenderer(physics, kind)
-
+        from exp_assignment2.sim.gl.backend import GLBackend
+        return GLBackend(source, client)
+    return PybulletRenderer(source, kind, client, egl_loaded)

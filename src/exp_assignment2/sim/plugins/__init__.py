@@ -1,32 +1,21 @@
-"""The simulator's ROS features, one plugin each, chosen per model in the world.
+"""The simulator's plugins: Gazebo's ROS plugins, one per feature.
 
-Each plugin is built as ``Plugin(sim, model, options)`` (``sim`` is the
-simulator node: physics, the command queue, the world's bounds) and may
-define ``before_step()`` (apply commands), ``after_step(stamp)`` (publish),
-``reset()`` and ``close()``. Subscriber callbacks never touch pybullet: they
-queue work with ``sim.run_in_loop``.
+:class:`Plugin` (in :mod:`.base`, with the whole contract) is what every
+plugin subclasses. :func:`registry` maps each ``<plugin filename>`` a URDF
+may name to the class that serves it; importing it needs rospy, the base
+does not.
 """
-from exp_assignment2.sim.plugins.camera import CameraPlugin
-from exp_assignment2.sim.plugins.drive import DiffDrivePlugin, PlanarMovePlugin
-from exp_assignment2.sim.plugins.joints import (HeightPlugin, JointPositionPlugin,
-                                                JointStatePlugin)
-from exp_assignment2.sim.plugins.odometry import OdometryPlugin
+from exp_assignment2.sim.plugins.base import EngineHandle, Options, Plugin, PluginError
 
-PLUGINS = {
-    'diff_drive': DiffDrivePlugin,
-    'planar_move': PlanarMovePlugin,
-    'joint_position': JointPositionPlugin,
-    'height': HeightPlugin,
-    'odometry': OdometryPlugin,
-    'joint_states': JointStatePlugin,
-    'camera': CameraPlugin,
-}
-# drives first: their commands apply before the step; publishers read after it
-ORDER = ('diff_drive', 'planar_move', 'joint_position', 'height', 'odometry', 'joint_states',
-         'camera')
+__all__ = ['EngineHandle', 'Options', 'Plugin', 'PluginError', 'registry']
 
 
-def load_plugins(sim, model):
-    """The plugins a model's world entry asks for, in application order."""
-    return [PLUGINS[name](sim, model, model.plugins[name])
-            for name in ORDER if name in model.plugins]
+def registry():
+    """``{filename: Plugin subclass}`` of the ROS plugins."""
+    from exp_assignment2.sim.plugins.camera import CameraPlugin
+    from exp_assignment2.sim.plugins.drive import DiffDrivePlugin, PlanarMovePlugin
+    from exp_assignment2.sim.plugins.joint_states import JointStatePublisherPlugin
+    from exp_assignment2.sim.plugins.ros_control import RosControlPlugin
+    return {name: cls for cls in (DiffDrivePlugin, PlanarMovePlugin, CameraPlugin,
+                                  RosControlPlugin, JointStatePublisherPlugin)
+            for name in cls.FILENAMES}

@@ -1,122 +1,144 @@
-"""A robot camera as Gazebo's camera plugin published it: a JPEG stream on
-``<ns>/<name>/image_raw/compressed`` (what image_transport's compressed
-publisher sends) and ``<ns>/<name>/camera_info``.
+"""``libgazebo_ros_camera.so`` inside a ``<sensor type="camera">``: what
+Gazebo's camera plugin publishes through image_transport.
 
-Frames are due at ``rate`` Hz of simulated time. The simulator's thread
-captures a frame (pybullet calls) and hands it to one worker thread that
-renders (``gl``), converts and encodes it, so that work overlaps the next
-physics steps. The hand-over holds one frame: when the worker is behind, the
-simulator waits rather than drop or queue frames, so the rate in simulated
-time stays exact. Nothing is rendered or encoded while nobody subscribes.
+* ``<ns>/<cameraName>/<imageTopicName>/compressed``: JPEG frames, ``format``
+  as image_transport's compressed publisher writes it;
+* ``<ns>/<cameraName>/<imageTopicName>``: sensor_msgs/Image in the sensor's
+  format (``R8G8B8``: rgb8), same stamp and frame as the JPEG;
+* ``<ns>/<cameraName>/<cameraInfoTopicName>``.
+
+Each is made only while it has a subscriber (rospy tells the plugin when
+subscribers come and go), so an unwatched camera costs nothing. Frames are
+due at the sensor's update_rate in simulated time. The simulator's thread
+captures a frame (pybullet calls) and hands it to one worker thread, shared
+by every camera, that renders (``gl``), converts and encodes it, so that work
+overlaps the next physics steps. The hand-over holds one frame: when the
+worker is behind, the simulator waits rather than drop or queue frames, so
+the rate in simulated time stays exact.
 """
 import copy
-import queue
-import threading
+import math
 
-import rospy
-from sensor_msgs.msg import CameraInfo, CompressedImage
+import cv2
+from sensor_msgs.msg import CameraInfo, CompressedImage, Image
 from std_msgs.msg import Header
 
-from exp_assignment2.sim.camera import CameraSpec, PybulletRenderer, make_renderer
+from exp_assignment2.sim.camera import CameraSpec
+from exp_assignment2.sim.plugins.base import Plugin, PluginError
+from exp_assignment2.sim.plugins.frame_worker import FrameWorker
+from exp_assignment2.sim.plugins.cores import Every
+from exp_assignment2.sim.plugins.ros_io import Watched, stamp
 from exp_assignment2.vision import encode_jpeg
 
 JPEG_FORMAT = 'rgb8; jpeg compressed bgr8'   # what image_transport writes for rgb8 images
+DEFAULT_RATE = 30.0   # a sensor with update_rate 0 (as fast as Gazebo renders)
 
 
-class FrameWorker(object):
-    """The thread that finishes frames; owns the renderer's GL context."""
-
-    def __init__(self, kind, physics):
-        self.backend = make_renderer(kind, physics)
-        self.jobs = queue.Queue(maxsize=1)
-        self.started = threading.Event()
-        self.error = None
-        self.thread = threading.Thread(target=self._run, name='camera', daemon=True)
-        self.thread.start()
-        self.started.wait()
-        if self.error is not None:
-            rospy.logwarn('camera: renderer %s cannot start (%s); using tiny instead'
-                          % (kind, self.error))
-            self.backend = PybulletRenderer(physics, 'tiny')
-            self.thread = threading.Thread(target=self._loop, name='camera', daemon=True)
-            self.thread.start()
-        rospy.loginfo('camera: renderer %s', self.backend.name)
-
-    def _run(self):
-        try:
-            self.backend.start()        # a GL context belongs to this thread
-        except RuntimeError as exc:
-            self.error = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
-            self.started.set()
-            return
-        self.started.set()
-        self._loop()
-
-    def _loop(self):
-        while True:
-            item = self.jobs.get()
-            if item is None:
-                break
-            camera, stamp, job = item
-            try:
-                camera.publish(stamp, self.backend.finish(job))
-            except Exception as exc:     # a bad frame must not stop the camera
-                rospy.logerr_throttle(10.0, 'camera: frame dropped: %s' % exc)
-        self.backend.close()
-
-    def submit(self, camera, stamp, job):
-        self.jobs.put((camera, stamp, job))     # waits while the worker is busy
-
-    def close(self):
-        self.jobs.put(None)
-        self.thread.join(5.0)
+def sensor_spec(plugin, settings):
+    """The :class:`~exp_assignment2.sim.camera.CameraSpec` of the plugin's
+    sensor, the host's ``camera`` settings (width, height, rate, hfov in
+    degrees) overriding what the URDF says."""
+    sensor = plugin.sensor
+    if sensor is None or sensor.type != 'camera':
+        raise PluginError('%s: must sit in a <sensor type="camera">' % plugin.options.where)
+    cam = sensor.options.get('camera', {})
+    cam = cam if isinstance(cam, dict) else {}
+    image, clip = cam.get('image') or {}, cam.get('clip') or {}
+    values = dict(width=image.get('width', 320), height=image.get('height', 240),
+                  hfov=math.degrees(float(cam.get('horizontal_fov', 1.047))),
+                  near=clip.get('near', 0.1), far=clip.get('far', 100.0),
+                  rate=sensor.update_rate or plugin.options.number('updateRate', 0.0)
+                  or DEFAULT_RATE)
+    values.update({k: v for k, v in settings.items() if v is not None})
+    try:
+        return CameraSpec(plugin.model.name, sensor.link,
+                          name=plugin.options.text('cameraName', sensor.name or 'camera'),
+                          width=int(float(values['width'])), height=int(float(values['height'])),
+                          rate=float(values['rate']), hfov=float(values['hfov']),
+                          near=float(values['near']), far=float(values['far']),
+                          image_format=image.get('format', 'R8G8B8') or 'R8G8B8',
+                          jpeg_quality=int(settings.get('jpeg_quality') or 80),
+                          offset=sensor.pose)
+    except (TypeError, ValueError) as exc:
+        raise PluginError('%s: %s' % (plugin.options.where, exc))
 
 
-class CameraPlugin(object):
-    """One camera; ``width``, ``height``, ``rate``, ``hfov`` can be overridden
-    by the simulator node's ``~camera_*`` parameters."""
+class CameraPlugin(Plugin):
+    """One camera (see the module docstring): cameraName, imageTopicName,
+    cameraInfoTopicName, frameName, updateRate."""
 
-    def __init__(self, sim, model, options):
-        options = dict(options, **sim.camera_overrides)
-        self.sim, self.spec = sim, CameraSpec(model.name, options)
-        if sim.frame_worker is None:
-            sim.frame_worker = FrameWorker(sim.renderer_kind, sim.physics)
-        self.worker = sim.frame_worker
-        base = model.topic(self.spec.name)
-        self.image_pub = rospy.Publisher(base + '/image_raw/compressed', CompressedImage,
-                                         queue_size=1)
-        self.info_pub = rospy.Publisher(base + '/camera_info', CameraInfo, queue_size=1)
-        self.info = CameraInfo(width=self.spec.width, height=self.spec.height,
+    FILENAMES = ('libgazebo_ros_camera.so',)
+
+    def load(self):
+        settings = dict(self.engine.settings.get('camera') or {})
+        self.spec = spec = sensor_spec(self, settings)
+        self.frame_id = self.options.text('frameName', spec.link).lstrip('/')
+        base = self.topic(spec.name)
+        image = self.options.text('imageTopicName', 'image_raw')
+        self.on_subscribed = None      # called when someone starts watching a stream
+        self.jpeg = Watched(base + '/' + image + '/compressed', CompressedImage, self._watch)
+        self.raw = Watched(base + '/' + image, Image, self._watch)
+        self.info_pub = Watched(base + '/' + self.options.text('cameraInfoTopicName',
+                                                               'camera_info'), CameraInfo)
+        self.info = CameraInfo(width=spec.width, height=spec.height,
                                distortion_model='plumb_bob', D=[0.0] * 5,
                                R=[1, 0, 0, 0, 1, 0, 0, 0, 1])
-        self.info.K, self.info.P = self.spec.intrinsics()
-        self.period, self.next = 1.0 / self.spec.rate, 0.0
+        self.info.K, self.info.P = spec.intrinsics()
+        self.every = Every(spec.rate, lambda: self.engine.time)
+        self.worker = self.engine.shared(
+            'camera.worker', lambda: FrameWorker(self.engine.settings.get('renderer', 'gl'),
+                                                 self.engine))
+
+    def _watch(self):
+        if self.on_subscribed is not None and self.wanted():
+            self.on_subscribed()
 
     def wanted(self):
-        """Someone subscribes to the image."""
-        return self.image_pub.get_num_connections() > 0
+        """Someone subscribes to an image stream."""
+        return self.jpeg.wanted or self.raw.wanted
 
-    def after_step(self, stamp):
-        if self.sim.physics.time + 1e-9 < self.next:
+    def after_step(self):
+        if not self.every.due():
             return
-        self.next += self.period
+        when = stamp(self.engine)
         if self.wanted():
-            self.worker.submit(self, stamp, self.worker.backend.capture(self.spec))
-        elif self.info_pub.get_num_connections() > 0:
-            self._publish_info(stamp)
+            self.worker.submit(self, when, self.worker.backend.capture(self.spec))
+        elif self.info_pub.wanted:
+            self._publish_info(when)
 
-    def publish(self, stamp, bgr):
+    def publish(self, when, bgr):
         """Encode and publish a finished frame (worker thread)."""
-        msg = CompressedImage(format=JPEG_FORMAT,
-                              data=encode_jpeg(bgr, self.spec.jpeg_quality))
-        msg.header.stamp, msg.header.frame_id = stamp, self.spec.link
-        self.image_pub.publish(msg)
-        self._publish_info(stamp)
+        header = Header(stamp=when, frame_id=self.frame_id)
+        if self.jpeg.wanted:
+            self.jpeg.pub.publish(CompressedImage(header=header, format=JPEG_FORMAT,
+                                                  data=encode_jpeg(bgr, self.spec.jpeg_quality)))
+        if self.raw.wanted:
+            self.raw.pub.publish(raw_image(header, bgr, self.spec.encoding))
+        self._publish_info(when)
 
-    def _publish_info(self, stamp):
+    def _publish_info(self, when):
         info = copy.copy(self.info)     # two threads publish it: no shared header
-        info.header = Header(stamp=stamp, frame_id=self.spec.link)
-        self.info_pub.publish(info)
+        info.header = Header(stamp=when, frame_id=self.frame_id)
+        self.info_pub.pub.publish(info)
 
     def reset(self):
-        self.next = self.sim.physics.time
+        self.every.reset()
+
+    def close(self):
+        self.worker.drain()
+        for watched in (self.jpeg, self.raw, self.info_pub):
+            watched.pub.unregister()
+
+
+def raw_image(header, bgr, encoding):
+    """A sensor_msgs/Image of a BGR frame in ``encoding`` (rgb8, bgr8, mono8)."""
+    if encoding == 'rgb8':
+        pixels = cv2.cvtColor(bgr, cv2.COLOR_BGR2RGB)
+    elif encoding == 'mono8':
+        pixels = cv2.cvtColor(bgr, cv2.COLOR_BGR2GRAY)
+    else:
+        pixels = bgr
+    height, width = pixels.shape[:2]
+    channels = 1 if pixels.ndim == 2 else pixels.shape[2]
+    return Image(header=header, height=height, width=width, encoding=encoding, is_bigendian=0,
+                 step=width * channels, data=pixels.tobytes())

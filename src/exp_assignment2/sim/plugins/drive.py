@@ -1,57 +1,115 @@
-"""``cmd_vel`` for a body: Gazebo's diff_drive and planar_move plugins."""
+"""Gazebo's drive plugins with their ROS topics: ``libgazebo_ros_diff_drive.so``
+and ``libgazebo_ros_planar_move.so``, with the options and defaults of
+Noetic's gazebo_ros_pkgs. Each subscribes its command topic and publishes
+odometry and TF at its update rate; the driving itself is the ROS-free core
+(:mod:`.cores`)."""
+import math
+
 import rospy
-from geometry_msgs.msg import Twist
+from geometry_msgs.msg import TransformStamped
+from sensor_msgs.msg import JointState
+from std_msgs.msg import Header
+from tf2_msgs.msg import TFMessage
 
-from exp_assignment2.refusal import RefusalLog
-from exp_assignment2.sim.drives import DiffDrive, PlanarMove
+from exp_assignment2.sim.plugins.cores import DiffDriveCore, Every, PlanarMoveCore
+from exp_assignment2.sim.plugins.ros_io import CommandTopic, OdometryPublisher, stamp
 
 
-class DrivePlugin(object):
-    """Subscribes ``<ns>/cmd_vel``; non-finite commands are ignored, commands
-    beyond the limits clamped, each with a throttled warning."""
+def yaw_quaternion(yaw):
+    return (0.0, 0.0, math.sin(yaw / 2.0), math.cos(yaw / 2.0))
 
-    def __init__(self, sim, model, drive):
-        self.sim, self.model, self.drive = sim, model, drive
-        sim.drives[model.name] = drive
-        self.topic = model.topic(drive.options['topic'])
-        # one warning line per topic and 5 s, whatever arrives (throttled by topic)
-        self.ignored = RefusalLog(self.topic, rospy.logwarn, period=5.0, what='ignored')
-        self.clamped = RefusalLog(self.topic, rospy.logwarn, period=5.0, what='clamped')
-        rospy.Subscriber(self.topic, Twist, self._on_twist, queue_size=1)
 
-    def _on_twist(self, msg):
-        values = (msg.linear.x, msg.linear.y, msg.angular.z)
-        self.sim.run_in_loop(lambda: self._command(values))
+class DiffDrivePlugin(DiffDriveCore):
+    """``libgazebo_ros_diff_drive.so`` (see :class:`~.cores.DiffDriveCore`) with
+    commandTopic, odometryTopic, odometryFrame, robotBaseFrame, publishTf,
+    publishOdomTF, publishWheelTF, publishWheelJointState. Sets the parameter
+    ``<ns>/turn_sign`` (+1: +angular.z turns left) for nodes that must know."""
 
-    def _command(self, values):
-        try:
-            clamped = self.drive.command(*values)
-        except ValueError as exc:
-            self.ignored('ignored: %s' % exc)
-            return
-        if clamped:
-            self.clamped('(%.3g, %.3g, %.3g) clamped to the limits, %s'
-                         % (tuple(values) + (self.drive.limits,)))
+    def load(self):
+        DiffDriveCore.load(self)
+        o = self.options
+        base = o.text('robotBaseFrame', 'base_footprint')
+        self.odometry = None
+        if o.boolean('publishTf', True):     # Noetic: no publishTf, no odometry at all
+            self.odometry = OdometryPublisher(self.topic(o.text('odometryTopic', 'odom')),
+                                              o.text('odometryFrame', 'odom'), base,
+                                              tf=o.boolean('publishOdomTF', True))
+        self.wheel_states = (rospy.Publisher(self.topic('joint_states'), JointState,
+                                             queue_size=10)
+                             if o.boolean('publishWheelJointState', False) else None)
+        self.wheel_tf = (rospy.Publisher('/tf', TFMessage, queue_size=100)
+                         if o.boolean('publishWheelTF', False) else None)
+        self.cmd = CommandTopic(self, self.topic(o.text('commandTopic', 'cmd_vel')),
+                                self.command)
+        rospy.set_param(self.topic('turn_sign'), self.drive.turn_sign())
 
-    def before_step(self):
-        self.drive.apply()
+    def on_update(self):
+        when = stamp(self.engine)
+        if self.odometry is not None:
+            if self.encoder:
+                x, y, yaw = self.encoder_pose
+                v, w = self.encoder_twist
+                self.odometry.publish(when, (x, y, 0.0), yaw_quaternion(yaw), (v, 0.0, 0.0),
+                                      (0.0, 0.0, w))
+            else:
+                position, quaternion = self.model.pose()
+                linear, angular = self.model.twist()
+                self.odometry.publish(when, position, quaternion, linear, angular)
+        if self.wheel_states is not None:
+            names, pos, vel, eff = self.model.joint_states(self.drive.joints)
+            self.wheel_states.publish(JointState(header=Header(stamp=when), name=names,
+                                                 position=pos, velocity=vel, effort=eff))
+        if self.wheel_tf is not None:
+            self._publish_wheel_tf(when)
+
+    def _publish_wheel_tf(self, when):
+        transforms = []
+        for name in self.drive.joints:
+            joint = self.model.urdf.joints[name]
+            (x, y, z), q = self.model.relative_pose(joint.parent, joint.child)
+            tf = TransformStamped(header=Header(stamp=when, frame_id=joint.parent),
+                                  child_frame_id=joint.child)
+            t, r = tf.transform.translation, tf.transform.rotation
+            t.x, t.y, t.z = x, y, z
+            r.x, r.y, r.z, r.w = q
+            transforms.append(tf)
+        self.wheel_tf.publish(TFMessage(transforms=transforms))
+
+    def close(self):
+        self.cmd.close()
+        if self.odometry is not None:
+            self.odometry.close()
+        for pub in (self.wheel_states, self.wheel_tf):
+            if pub is not None:
+                pub.unregister()
+
+
+class PlanarMovePlugin(PlanarMoveCore):
+    """``libgazebo_ros_planar_move.so`` (see :class:`~.cores.PlanarMoveCore`)
+    with commandTopic, odometryTopic, odometryFrame, odometryRate,
+    robotBaseFrame, publishOdometryTf."""
+
+    def load(self):
+        PlanarMoveCore.load(self)
+        o = self.options
+        self.every = Every(o.number('odometryRate', 20.0, minimum=0.0), lambda: self.engine.time)
+        self.odometry = OdometryPublisher(self.topic(o.text('odometryTopic', 'odom')),
+                                          o.text('odometryFrame', 'odom'),
+                                          o.text('robotBaseFrame', 'base_footprint'),
+                                          tf=o.boolean('publishOdometryTf', True))
+        self.cmd = CommandTopic(self, self.topic(o.text('commandTopic', 'cmd_vel')),
+                                self.command)
+
+    def after_step(self):
+        if self.every.due():
+            position, quaternion = self.model.pose()
+            linear, angular = self.model.twist()
+            self.odometry.publish(stamp(self.engine), position, quaternion, linear, angular)
 
     def reset(self):
-        self.drive.reset()
+        PlanarMoveCore.reset(self)
+        self.every.reset()
 
-
-class DiffDrivePlugin(DrivePlugin):
-    """Two wheels. Sets ``<ns>/turn_sign`` (+1: +angular.z turns left, REP 103;
-    -1: the original robot's wiring) for nodes that must know."""
-
-    def __init__(self, sim, model, options):
-        DrivePlugin.__init__(self, sim, model, DiffDrive(sim.physics, model.name, options))
-        rospy.set_param(model.topic('turn_sign'), self.drive.turn_sign)
-
-
-class PlanarMovePlugin(DrivePlugin):
-    """Omnidirectional (MiRo) or kinematic (the ball)."""
-
-    def __init__(self, sim, model, options):
-        DrivePlugin.__init__(self, sim, model, PlanarMove(sim.physics, model.name, options,
-                                                          sim.world.bounds))
+    def close(self):
+        self.cmd.close()
+        self.odometry.close()

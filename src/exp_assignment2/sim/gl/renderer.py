@@ -1,6 +1,6 @@
 """The GL renderer's drawing half: a scene description drawn with OpenGL.
 
-:class:`GLRenderer` owns an OpenGL context (:class:`~.gl_context.GLContext`)
+:class:`GLRenderer` owns an OpenGL context (:class:`~.context.GLContext`)
 bound to the thread that constructs it: create it, render with it and close
 it in that one thread (e.g. a render worker). Geometry is uploaded once; a
 frame sets one 4x4 uniform per link, draws that link's index range and reads
@@ -16,9 +16,9 @@ import math
 
 import numpy as np
 
-from .gl_context import GLContext
-from .gl_meshes import VERTEX_FORMAT
-from .urdf_shapes import pose_matrix
+from .context import GLContext
+from .meshes import VERTEX_FORMAT
+from ..urdf import pose_matrix
 
 
 def view_projection(camera_pose, width, height, hfov_deg, near, far, flip_y=True):
@@ -85,7 +85,7 @@ void main() {
 
 
 class GLRenderer(object):
-    """Draws a :class:`~.render_gl.SceneDescription` with OpenGL into BGR images.
+    """Draws a :class:`~.scene.SceneDescription` with OpenGL into BGR images.
 
     The GL context is created in, and bound to, the constructing thread:
     :meth:`render` and :meth:`close` must run in that same thread. Raises
@@ -116,23 +116,16 @@ class GLRenderer(object):
                     'diffuse': diffuse, 'grid_step': grid_step,
                     'grid_half_width': grid_line_width / 2.0,
                     'grid_line_factor': grid_line_factor}
+        self.programs, self.vaos, self.vbo, self.ibo = [], [], None, None
         with self.gl.current() as ctx:
-            # Geometry is uploaded here, once; a frame only writes uniforms.
-            # (GL buffers cannot be empty: an empty scene gets a dummy triangle)
-            self.vbo = ctx.buffer(np.ascontiguousarray(description.vertices, 'f4').tobytes()
-                                  or bytes(108))
-            self.ibo = ctx.buffer(np.ascontiguousarray(description.indices, 'u4').tobytes()
-                                  or bytes(12))
             # two programs: the grid's fragment work is paid on grid floors only
-            self.programs, self.vaos = [], []
             for fragment in (PLAIN_FRAGMENT_SHADER, GRID_FRAGMENT_SHADER):
                 prog = ctx.program(vertex_shader=VERTEX_SHADER, fragment_shader=fragment)
                 for key, value in settings.items():
                     if key in prog:
                         prog[key].value = value
                 self.programs.append(prog)
-                self.vaos.append(ctx.vertex_array(prog, [(self.vbo, VERTEX_FORMAT, 'in_pos',
-                                                          'in_norm', 'in_color')], self.ibo, 4))
+            self._upload(ctx, description)
             # RGBA colour buffer: Mesa reads 4 components back ~8x faster than 3,
             # and OpenCV drops the alpha in a fraction of that time.
             size, comps = (self.width, self.height), 4 if self._cvt else 3
@@ -143,9 +136,30 @@ class GLRenderer(object):
         self._rgba = np.empty((self.height, self.width, comps), np.uint8)
         self._image = np.empty((self.height, self.width, 3), np.uint8)
 
+    def _upload(self, ctx, description):
+        """Geometry goes to the GPU here, once per scene; a frame only writes uniforms.
+        (GL buffers cannot be empty: an empty scene gets a dummy triangle.)"""
+        for obj in self.vaos + [self.vbo, self.ibo]:
+            if obj is not None:
+                obj.release()
+        self.description = description
+        self.vbo = ctx.buffer(np.ascontiguousarray(description.vertices, 'f4').tobytes()
+                              or bytes(108))
+        self.ibo = ctx.buffer(np.ascontiguousarray(description.indices, 'u4').tobytes()
+                              or bytes(12))
+        self.vaos = [ctx.vertex_array(prog, [(self.vbo, VERTEX_FORMAT, 'in_pos', 'in_norm',
+                                              'in_color')], self.ibo, 4)
+                     for prog in self.programs]
+
+    def set_scene(self, description):
+        """Draw another scene from now on (models were spawned or deleted)."""
+        self.gl.check_thread('GLRenderer.set_scene')
+        with self.gl.current() as ctx:
+            self._upload(ctx, description)
+
     def render(self, poses, camera_pose, hfov_deg=80.0, near=0.05, far=40.0, hidden=(),
                out=None):
-        """Draw the scene at ``poses`` (a :meth:`~.render_gl.BulletSceneReader.read_poses`
+        """Draw the scene at ``poses`` (a :meth:`~.scene.SceneReader.read_poses`
         snapshot) seen from ``camera_pose`` (4x4 world pose, or a (position,
         quaternion or 3x3 rotation) tuple); ``hidden``: model names or body
         ids not to draw.

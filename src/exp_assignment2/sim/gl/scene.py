@@ -1,43 +1,44 @@
-"""The simulator's own camera renderer: URDF visuals drawn with OpenGL (moderngl).
+"""What the GL renderer draws, split along pybullet's threading rule.
 
-It draws the scene pybullet's ``getCameraImage`` draws, in a few milliseconds
-on Mesa's llvmpipe (headless EGL), split along pybullet's threading rule:
-
-* :class:`BulletSceneReader` lives in the simulator's thread (pybullet is not
-  thread-safe). Built once from a pybullet client and the loaded bodies, it
-  turns their URDF visuals into a :class:`SceneDescription` (plain numpy
-  data); per frame :meth:`~BulletSceneReader.read_poses` returns every link's
+* :class:`SceneReader` lives in the simulator's thread (pybullet is not
+  thread-safe). Built from the world's models (each with its parsed URDF,
+  :class:`~exp_assignment2.sim.urdf.UrdfModel`, the one the physics loaded),
+  it turns their visuals into a :class:`SceneDescription` (plain numpy
+  data); per frame :meth:`~SceneReader.read_poses` returns every link's
   world frame as one new ``(n_slots, 4, 4)`` float32 array (one batched
   pybullet query per body), which may be handed to another thread.
-* :class:`GLRenderer` (:mod:`.gl_renderer`, re-exported here with
-  :func:`view_projection`) owns an OpenGL context bound to the thread that
-  constructs it: create it, render with it and close it in that one thread
-  (e.g. a render worker).
+* :class:`~.renderer.GLRenderer` owns an OpenGL context bound to the thread
+  that constructs it (e.g. the camera's worker) and draws a description.
 
-This module holds the first half; the second is :mod:`.gl_renderer` (drawing,
-camera convention) on :mod:`.gl_context` (the EGL context). The geometry comes
-from :mod:`.urdf_shapes` (URDF parsing) and :mod:`.gl_meshes` (triangles).
+A model to draw is anything with ``name``, ``id`` (pybullet body id), ``urdf``
+and ``grid`` (its base link gets the 1 m floor grid): a
+:class:`~exp_assignment2.sim.model.Model`, or :class:`Drawable` in tests.
 """
+import os
 from collections import namedtuple
 
 import numpy as np
 
-from .gl_meshes import indexed, visual_vertices
-from .gl_renderer import GLRenderer, view_projection
-from .urdf_shapes import parse_urdf, pose_matrix, quaternion_matrices
+from ..urdf import parse, pose_matrix, quaternion_matrices
+from .meshes import indexed, visual_vertices
+from .renderer import GLRenderer, view_projection
 
-__all__ = ['BulletSceneReader', 'GLRenderer', 'SceneDescription', 'SceneModel',
-           'view_projection']
+__all__ = ['Drawable', 'GLRenderer', 'SceneDescription', 'SceneReader', 'view_projection']
 
-SceneModel = namedtuple('SceneModel', 'body_id urdf grid name')
-SceneModel.__doc__ = """A loaded body to draw: pybullet unique id, its URDF path,
-whether its base link gets the 1 m floor grid, and a name (for ``hidden``)."""
+Drawable = namedtuple('Drawable', 'name id urdf grid')
+
+
+def drawable(body_id, path, grid=False, name=None):
+    """A :class:`Drawable` for a body loaded from the URDF file ``path``."""
+    with open(path) as f:
+        urdf = parse(f.read(), os.path.dirname(os.path.abspath(path)))
+    return Drawable(name or urdf.name, body_id, urdf, grid)
 
 
 class SceneDescription(object):
     """What to draw, as plain numpy data (no pybullet, no GL; read-only once built).
 
-    ``vertices``: (n, 9) float32 rows (:data:`.gl_meshes.VERTEX_FORMAT`) in
+    ``vertices``: (n, 9) float32 rows (:data:`.meshes.VERTEX_FORMAT`) in
     their link's frame; ``indices``: uint32 triangle corners; ``draws``: (slot,
     first index, index count, cull back faces, grid) per group, grid floors
     last; ``slots``: (model name, link name) per pose slot; ``model_names``,
@@ -60,7 +61,7 @@ class SceneDescription(object):
         return self._index[(model, link)]
 
     def link_pose(self, poses, model, link):
-        """4x4 world frame of a link in a :meth:`BulletSceneReader.read_poses`
+        """4x4 world frame of a link in a :meth:`SceneReader.read_poses`
         snapshot, e.g. the camera's: ``link_pose(poses, 'robot', 'camera_link')``."""
         return poses[self.slot(model, link)].astype(float)
 
@@ -68,15 +69,26 @@ class SceneDescription(object):
         """Set of the slots of the models in ``hidden`` (names or body ids)."""
         out = set()
         for h in hidden:
-            k = self.model_names.index(h) if h in self.model_names else self.body_ids.index(h)
+            if h in self.model_names:
+                k = self.model_names.index(h)
+            elif h in self.body_ids:
+                k = self.body_ids.index(h)
+            else:
+                continue       # deleted meanwhile
             out.update(range(*self.model_slots[k]))
         return out
 
 
-class BulletSceneReader(object):
+def empty_description():
+    """A scene with nothing in it."""
+    return SceneDescription(np.zeros((0, 9), np.float32), np.zeros(0, np.uint32), [], [], [],
+                            [], [])
+
+
+class SceneReader(object):
     """The simulator-thread half: URDF visuals and batched pose reads from pybullet.
 
-    :param models: iterable of :class:`SceneModel` (or equal tuples)
+    :param models: models to draw (see the module docstring)
     :param client: pybullet physics client id
     Construct it and call :meth:`read_poses` in the thread that owns the client.
     """
@@ -86,27 +98,27 @@ class BulletSceneReader(object):
         self._p, self.client = p, client
         self._bodies = []      # (body id, link indices)
         groups, slots, names, ids, ranges, inv_inertial = {}, [], [], [], [], []
-        for body_id, urdf, grid, name in (SceneModel(*m) for m in models):
-            urdf_model = parse_urdf(urdf)
+        for model in models:
+            body_id, urdf = model.id, model.urdf
             first, n_links = len(slots), p.getNumJoints(body_id, physicsClientId=client)
-            index = {p.getBodyInfo(body_id, physicsClientId=client)[0].decode(): -1}
+            index = {urdf.root: -1}
             for j in range(n_links):
                 index[p.getJointInfo(body_id, j, physicsClientId=client)[12].decode()] = j
             by_index = {v: k for k, v in index.items()}
-            slots += [(name, by_index[j]) for j in range(-1, n_links)]
-            parent = {j.child: j for j in urdf_model.joints}
-            for link, visuals in urdf_model.visuals.items():
+            slots += [(model.name, by_index[j]) for j in range(-1, n_links)]
+            for link, visuals in urdf.visuals.items():
                 # A link pybullet merged away (URDF_MERGE_FIXED_LINKS) rides on
                 # its nearest kept ancestor through the fixed joints between.
                 frame, at = np.eye(4), link
-                while at not in index and at in parent:
-                    frame, at = parent[at].origin.dot(frame), parent[at].parent
+                while at not in index and urdf.parent_joint(at) is not None:
+                    joint = urdf.parent_joint(at)
+                    frame, at = joint.origin.dot(frame), joint.parent
                 if at not in index:
-                    raise ValueError('%s: link %s is not in pybullet body %d'
-                                     % (urdf, link, body_id))
+                    raise ValueError('model %s: link %s is not in pybullet body %d'
+                                     % (model.name, link, body_id))
                 # The grid goes where the simulator put pybullet's grid
                 # texture: on the base link of a grid model.
-                is_grid = bool(grid) and index[at] == -1
+                is_grid = bool(model.grid) and index[at] == -1
                 for v in visuals:
                     rows = visual_vertices(v, frame)
                     if rows is not None:
@@ -118,7 +130,7 @@ class BulletSceneReader(object):
             # URDF base frame is that times the inverse local inertial frame.
             info = p.getDynamicsInfo(body_id, -1, physicsClientId=client)
             inv_inertial.append(np.linalg.inv(pose_matrix(info[3], info[4])))
-            names.append(name)
+            names.append(model.name)
             ids.append(body_id)
             ranges.append((first, len(slots)))
             self._bodies.append((body_id, list(range(n_links))))
@@ -135,7 +147,7 @@ class BulletSceneReader(object):
             np.concatenate(vertices) if vertices else np.zeros((0, 9), np.float32),
             np.concatenate(indices) if indices else np.zeros(0, np.uint32),
             draws, slots, names, ids, ranges)
-        self._inv_inertial = np.array(inv_inertial)
+        self._inv_inertial = np.array(inv_inertial).reshape(-1, 4, 4)
         self._base_slots = np.array([r[0] for r in ranges], int)
 
     def read_poses(self):
@@ -153,8 +165,9 @@ class BulletSceneReader(object):
                     pos.append(s[4])   # the URDF link frame, not the inertial one
                     quat.append(s[5])
         m = np.zeros((len(pos), 4, 4))
-        m[:, :3, :3] = quaternion_matrices(quat)
-        m[:, :3, 3] = pos
-        m[:, 3, 3] = 1.0
-        m[self._base_slots] = np.matmul(m[self._base_slots], self._inv_inertial)
+        if pos:
+            m[:, :3, :3] = quaternion_matrices(quat)
+            m[:, :3, 3] = pos
+            m[:, 3, 3] = 1.0
+            m[self._base_slots] = np.matmul(m[self._base_slots], self._inv_inertial)
         return m.astype(np.float32)

@@ -1,0 +1,129 @@
+"""The drive plugins without their ROS topics (no rospy): Gazebo's options
+read, the drive built, commands applied at the update rate. The ROS plugins
+(:mod:`.drive`) add the command topic and odometry; the unit tests and the
+benchmark register these cores under the same file names and drive the
+models by hand, through the very same stepping code.
+"""
+import math
+
+from exp_assignment2.sim.drives import DiffDrive, PlanarMove, VelocityCommand
+from exp_assignment2.sim.plugins.base import Plugin, PluginError
+
+ODOMETRY_SOURCES = ('world', 'encoder')
+
+
+class Every(object):
+    """Something due every ``1 / rate`` s of simulated time (rate 0: every step),
+    as Gazebo's plugins count it; time going back makes it due at once."""
+
+    def __init__(self, rate, now):
+        self.period = 1.0 / rate if rate > 0 else 0.0
+        self.now, self.next = now, now()
+
+    def due(self):
+        t = self.now()
+        if t < self.next - self.period - 1e-9:     # time went back (reset_simulation)
+            self.next = t
+        if t + 1e-9 < self.next:
+            return False
+        self.next += self.period
+        if self.next <= t:                          # far behind: count from now
+            self.next = t + self.period
+        return True
+
+    def reset(self):
+        self.next = self.now()
+
+
+def velocity_command(plugin):
+    """A :class:`~exp_assignment2.sim.drives.VelocityCommand` with the host's
+    limits and timeout (settings ``max_linear``, ``max_angular``, ``cmd_timeout``)."""
+    settings = plugin.engine.settings
+    return VelocityCommand(lambda: plugin.engine.time,
+                           max_linear=float(settings.get('max_linear', 2.0)),
+                           max_angular=float(settings.get('max_angular', 3.0)),
+                           cmd_timeout=float(settings.get('cmd_timeout', 0.5)))
+
+
+class DiffDriveCore(Plugin):
+    """``libgazebo_ros_diff_drive.so`` without ROS: leftJoint, rightJoint,
+    wheelSeparation, wheelDiameter, wheelTorque, updateRate, odometrySource
+    (world|encoder). ``legacyMode`` is accepted and, as in Noetic, not read:
+    see :class:`~exp_assignment2.sim.drives.DiffDrive`."""
+
+    FILENAMES = ('libgazebo_ros_diff_drive.so',)
+
+    def load(self):
+        o = self.options
+        self.command = velocity_command(self)
+        try:
+            self.drive = DiffDrive(self.model, o.text('leftJoint', 'left_joint'),
+                                   o.text('rightJoint', 'right_joint'),
+                                   o.number('wheelSeparation', 0.34, positive=True),
+                                   o.number('wheelDiameter', 0.15, positive=True),
+                                   o.number('wheelTorque', 5.0, positive=True), self.command)
+        except ValueError as exc:
+            raise PluginError('%s: %s' % (o.where, exc))
+        self.every = Every(o.number('updateRate', 100.0, minimum=0.0), lambda: self.engine.time)
+        source = o.text('odometrySource', 'world').lower()
+        if source not in ODOMETRY_SOURCES:    # Gazebo warns and uses world, as here
+            self.engine.log.warn('%s: odometrySource %r is not world or encoder; using world'
+                                 % (o.where, source))
+            source = 'world'
+        self.encoder = source == 'encoder'
+        self.encoder_pose, self.encoder_twist = [0.0, 0.0, 0.0], (0.0, 0.0)
+        # wheels grip; everything else that touches the ground (a caster) slides
+        wheels = {self.model.urdf.joints[j].child for j in self.drive.joints}
+        for link in self.model.body.links:
+            self.model.set_friction(link, 1.0 if link in wheels else 0.0,
+                                    spinning=0.001 if link in wheels else 0.0)
+
+    def before_step(self):
+        # as Gazebo's UpdateChild: at the update rate, report, then set the wheels
+        if self.encoder:
+            self._integrate_encoders()
+        if self.every.due():
+            self.on_update()
+            self.drive.apply()
+
+    def on_update(self):
+        """At the update rate, before the wheels are set (the ROS plugin publishes)."""
+
+    def _integrate_encoders(self):
+        """Gazebo's encoder odometry: dead reckoning from the wheel rates."""
+        _, _, rates, _ = self.model.joint_states(self.drive.joints)
+        dt, r, b = self.engine.time_step, self.drive.radius, 2.0 * self.drive.half
+        sl, sr = rates[0] * r * dt, rates[1] * r * dt
+        x, y, theta = self.encoder_pose
+        heading = theta + (sr - sl) / (2.0 * b)
+        self.encoder_pose = [x + (sl + sr) / 2.0 * math.cos(heading),
+                             y + (sl + sr) / 2.0 * math.sin(heading), theta + (sr - sl) / b]
+        self.encoder_twist = ((sl + sr) / 2.0 / dt, (sr - sl) / b / dt)
+
+    def reset(self):
+        self.command.reset()
+        self.every.reset()
+        self.encoder_pose = [0.0, 0.0, 0.0]
+
+
+class PlanarMoveCore(Plugin):
+    """``libgazebo_ros_planar_move.so`` without ROS: the command is in the
+    body's frame (x, y, yaw rate), applied every step."""
+
+    FILENAMES = ('libgazebo_ros_planar_move.so',)
+
+    def load(self):
+        self.command = velocity_command(self)
+        self.drive = PlanarMove(self.model, self.command, self.engine.bounds,
+                                self.engine.time_step)
+        if not self.model.kinematic:
+            self.model.set_friction(self.model.base_frame, 0.0)
+
+    def before_step(self):
+        self.drive.apply()
+
+    def reset(self):
+        self.command.reset()
+
+
+CORES = {name: cls for cls in (DiffDriveCore, PlanarMoveCore) for name in cls.FILENAMES}

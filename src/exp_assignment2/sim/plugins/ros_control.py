@@ -1,0 +1,69 @@
+"""``libgazebo_ros_control.so``: the controllers of the user's YAML, under
+the robot's namespace, as gazebo_ros_control and a controller_manager
+would run them.
+
+Every controller declared on the parameter server under ``<ns>`` (``<ns>/
+<name>/type`` and its other keys) is served, whether the YAML was loaded
+before the model was spawned or after (the parameter server tells the
+plugin; see :mod:`.param_watch`):
+
+* ``joint_state_controller/JointStateController``: ``<ns>/joint_states`` of
+  every movable joint at ``publish_rate`` Hz of simulated time;
+* ``position_controllers/``, ``effort_controllers/`` and
+  ``velocity_controllers/JointPositionController``: ``<ns>/<name>/command``
+  (std_msgs/Float64) is the joint's target angle, clamped to its limits;
+  ``pid`` gains are accepted (the joint is position-driven here);
+* ``velocity_controllers/`` and ``effort_controllers/JointVelocityController``:
+  ``<ns>/<name>/command`` is the joint's velocity.
+
+A controller naming a joint the model lacks, or of a type not listed, gets
+one warning and is ignored. ``<ns>/controller_manager/load_controller``,
+``unload_controller``, ``switch_controller`` and ``list_controllers`` answer
+as ros_control's controller manager does (``controller_manager spawner``
+uses them); a controller unloaded there stays unloaded until loaded again.
+"""
+import rospy
+
+from exp_assignment2.sim.plugins import param_watch
+from exp_assignment2.sim.plugins.base import Plugin
+from exp_assignment2.sim.plugins.controllers import CONTROLLER_TYPES, ControllerManager
+
+
+class RosControlPlugin(Plugin):
+    """gazebo_ros_control (see the module docstring): robotNamespace,
+    controlPeriod, robotSimType (the default one is the only one here)."""
+
+    FILENAMES = ('libgazebo_ros_control.so',)
+
+    def load(self):
+        self.ns = '/' + self.namespace if self.namespace else ''
+        self.manager = ControllerManager(self, self.ns)
+        initial = param_watch.watch_namespace(self.ns or '/', self._on_params)
+        self.manager.discover(initial if isinstance(initial, dict) else {})
+
+    def _on_params(self, key):
+        # rospy's XML-RPC thread: re-read in the simulation thread
+        self.engine.call_soon(self._rescan)
+
+    def _rescan(self):
+        try:
+            params = rospy.get_param(self.ns or '/', {})
+        except (KeyError, rospy.ROSException):
+            return
+        self.manager.discover(params if isinstance(params, dict) else {})
+
+    def before_step(self):
+        self.manager.apply()
+
+    def after_step(self):
+        self.manager.publish()
+
+    def reset(self):
+        self.manager.reset()
+
+    def close(self):
+        param_watch.unwatch_namespace(self.ns or '/', self._on_params)
+        self.manager.close()
+
+
+__all__ = ['RosControlPlugin', 'CONTROLLER_TYPES']

@@ -1,0 +1,101 @@
+"""What the ROS plugins share: stamps, update rates, a velocity command
+topic, odometry with its TF (as Gazebo's drive plugins publish it)."""
+import rospy
+from geometry_msgs.msg import TransformStamped, Twist
+from nav_msgs.msg import Odometry
+from tf2_msgs.msg import TFMessage
+
+from exp_assignment2.refusal import RefusalLog
+
+
+def stamp(engine):
+    """The engine's simulated time as a rospy.Time (exact, from integer ns)."""
+    ns = engine.time_ns
+    return rospy.Time(ns // 1000000000, ns % 1000000000)
+
+
+class Watched(rospy.SubscribeListener):
+    """A publisher that knows, by rospy's events, whether anyone subscribes;
+    ``on_change()`` is called when that changes."""
+
+    def __init__(self, topic, cls, on_change=None):
+        rospy.SubscribeListener.__init__(self)
+        self.on_change, self.count = on_change, 0
+        self.pub = rospy.Publisher(topic, cls, queue_size=1, subscriber_listener=self)
+
+    def peer_subscribe(self, topic_name, topic_publish, peer_publish):
+        pub = getattr(self, 'pub', None)     # a subscriber may come before the assignment
+        self.count = pub.get_num_connections() if pub is not None else self.count + 1
+        if self.on_change is not None:
+            self.on_change()
+
+    def peer_unsubscribe(self, topic_name, num_peers):
+        self.count = num_peers
+        if self.on_change is not None:
+            self.on_change()
+
+    @property
+    def wanted(self):
+        return self.count > 0
+
+
+class CommandTopic(object):
+    """A Twist topic feeding a VelocityCommand in the simulation thread;
+    non-finite commands are ignored and excessive ones clamped, each with a
+    warning at most every 5 s per topic."""
+
+    def __init__(self, plugin, topic, command):
+        self.engine, self.command, self.topic = plugin.engine, command, topic
+        self.ignored = RefusalLog(topic, rospy.logwarn, period=5.0, what='ignored')
+        self.clamped = RefusalLog(topic, rospy.logwarn, period=5.0, what='clamped')
+        self.sub = rospy.Subscriber(topic, Twist, self._on_twist, queue_size=1)
+
+    def _on_twist(self, msg):
+        values = (msg.linear.x, msg.linear.y, msg.angular.z)
+        self.engine.call_soon(lambda: self._take(values))
+
+    def _take(self, values):
+        try:
+            clamped = self.command.command(*values)
+        except ValueError as exc:
+            self.ignored('ignored: %s' % exc)
+            return
+        if clamped:
+            self.clamped('(%.3g, %.3g, %.3g) clamped to the limits, %s'
+                         % (tuple(values) + (self.command.limits,)))
+
+    def close(self):
+        self.sub.unregister()
+
+
+class OdometryPublisher(object):
+    """``nav_msgs/Odometry`` of a model and the TF ``frame -> child``: the
+    pose of the model's URDF root frame, the twist in the child frame."""
+
+    def __init__(self, topic, frame, child, tf=True):
+        self.frame, self.child = frame, child
+        self.pub = rospy.Publisher(topic, Odometry, queue_size=10)
+        self.tf_pub = rospy.Publisher('/tf', TFMessage, queue_size=100) if tf else None
+
+    def publish(self, when, position, quaternion, linear, angular):
+        odom = Odometry()
+        odom.header.stamp, odom.header.frame_id = when, self.frame
+        odom.child_frame_id = self.child
+        pose, twist = odom.pose.pose, odom.twist.twist
+        pose.position.x, pose.position.y, pose.position.z = position
+        (pose.orientation.x, pose.orientation.y, pose.orientation.z,
+         pose.orientation.w) = quaternion
+        twist.linear.x, twist.linear.y, twist.linear.z = linear
+        twist.angular.x, twist.angular.y, twist.angular.z = angular
+        self.pub.publish(odom)
+        if self.tf_pub is not None:
+            tf = TransformStamped(header=odom.header, child_frame_id=self.child)
+            t = tf.transform.translation
+            t.x, t.y, t.z = position
+            tf.transform.rotation = pose.orientation
+            self.tf_pub.publish(TFMessage(transforms=[tf]))
+
+    def close(self):
+        self.pub.unregister()
+        if self.tf_pub is not None:
+            self.tf_pub.unregister()

@@ -1,0 +1,171 @@
+"""The ROS-free engine: spawning and deleting models at run time, stepping,
+resets, and the plugin contract (no master)."""
+import math
+
+import pytest
+
+from exp_assignment2.sim.engine import Engine, SpawnError
+from exp_assignment2.sim.plugins.base import Plugin, PluginError
+
+BOX = '''<robot name="box">%s
+  <link name="base">
+    <inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/>
+    </inertial>
+    <collision><geometry><box size="0.2 0.2 0.2"/></geometry></collision>
+    <visual><geometry><box size="0.2 0.2 0.2"/></geometry></visual>
+  </link>
+</robot>'''
+
+
+def box(gazebo=''):
+    return BOX % gazebo
+
+
+def plugin_tag(filename, options=''):
+    return '<gazebo><plugin name="p" filename="%s">%s</plugin></gazebo>' % (filename, options)
+
+
+class Log(object):
+    def __init__(self):
+        self.lines = []
+
+    def info(self, text):
+        self.lines.append(('info', text))
+
+    def warn(self, text):
+        self.lines.append(('warn', text))
+
+    def error(self, text):
+        self.lines.append(('error', text))
+
+
+class Recorder(Plugin):
+    """Records every hook the engine calls, and when."""
+
+    FILENAMES = ('librecorder.so',)
+    calls = []
+
+    def load(self):
+        self.calls.append(('load', self.model.name, self.options.number('gain', 1.0),
+                           self.namespace))
+
+    def before_step(self):
+        self.calls.append(('before', self.engine.time))
+
+    def after_step(self):
+        self.calls.append(('after', self.engine.time))
+
+    def reset(self):
+        self.calls.append(('reset', self.engine.time))
+
+    def close(self):
+        self.calls.append(('close', self.model.name))
+
+
+class Refuser(Plugin):
+    FILENAMES = ('librefuse.so',)
+
+    def load(self):
+        raise PluginError('model %s: I refuse' % self.model.name)
+
+
+@pytest.fixture
+def engine():
+    Recorder.calls = []
+    eng = Engine(registry={'librecorder.so': Recorder, 'librefuse.so': Refuser}, log=Log(),
+                 real_time_factor=0)
+    yield eng
+    eng.close()
+
+
+def test_spawn_step_and_delete_at_run_time(engine):
+    engine.spawn('a', box(), (0, 0, 1, 0))
+    engine.run_for(0.5)
+    z = engine.models['a'].pose()[0][2]
+    assert z < 0.5                                      # a dynamic box falls
+    generation = engine.generation
+    engine.spawn('b', box('<gazebo><static>true</static></gazebo>'), (1, 0, 1, 0, 0, 0))
+    engine.run_for(0.5)
+    assert engine.models['b'].pose()[0] == pytest.approx((1, 0, 1))   # static stays
+    assert engine.generation == generation + 1
+    engine.delete('a')
+    assert list(engine.models) == ['b'] and engine.generation == generation + 2
+    with pytest.raises(SpawnError, match='no model named'):
+        engine.delete('a')
+
+
+@pytest.mark.parametrize('name,text,pose,why', [
+    ('a', box(), (0, 0, float('nan'), 0), 'not 6 finite numbers'),
+    ('a', box(), (0, 0), 'not 6 finite numbers'),
+    ('a', '<robot', (0, 0, 0, 0), 'not a valid URDF'),
+    ('a', '<sdf version="1.6"/>', (0, 0, 0, 0), 'root element is <sdf>'),
+    ('a', '<robot name="x"/>', (0, 0, 0, 0), 'has no link'),
+    ('', box(), (0, 0, 0, 0), 'needs a name'),
+])
+def test_a_bad_spawn_is_refused_with_the_reason_and_changes_nothing(engine, name, text, pose,
+                                                                  why):
+    engine.spawn('first', box(), (0, 0, 0.1, 0))
+    with pytest.raises(SpawnError, match=why):
+        engine.spawn(name, text, pose)
+    assert list(engine.models) == ['first']
+
+
+def test_a_taken_name_is_refused(engine):
+    engine.spawn('a', box(), (0, 0, 0.1, 0))
+    with pytest.raises(SpawnError, match='exists already'):
+        engine.spawn('a', box(), (1, 0, 0.1, 0))
+
+
+def test_a_plugin_that_refuses_fails_the_spawn_and_the_world_is_unchanged(engine):
+    text = box(plugin_tag('librecorder.so') + plugin_tag('librefuse.so'))
+    with pytest.raises(SpawnError, match='I refuse'):
+        engine.spawn('a', text)
+    assert 'a' not in engine.models and engine.plugins == {}
+    assert ('close', 'a') in Recorder.calls            # the one that loaded was closed
+
+
+def test_the_hooks_run_in_order_in_the_simulation_thread(engine):
+    engine.spawn('a', box(plugin_tag('librecorder.so', '<gain>2.5</gain>')), namespace='/ns/')
+    assert Recorder.calls == [('load', 'a', 2.5, 'ns')]
+    engine.run_for(0.02)
+    assert Recorder.calls[1:] == [('before', 0.0), ('after', 0.01), ('before', 0.01),
+                                  ('after', 0.02)]
+    engine.reset_simulation()
+    assert Recorder.calls[-1] == ('reset', 0.0) and engine.time == 0.0
+    engine.delete('a')
+    assert Recorder.calls[-1] == ('close', 'a')
+
+
+def test_the_spawn_namespace_wins_over_the_plugin_s_robot_namespace(engine):
+    engine.spawn('a', box(plugin_tag('librecorder.so', '<robotNamespace>/r1</robotNamespace>')))
+    engine.spawn('b', box(plugin_tag('librecorder.so', '<robotNamespace>/r1</robotNamespace>')),
+                 (1, 0, 0, 0), namespace='r2')
+    assert [c[3] for c in Recorder.calls if c[0] == 'load'] == ['r1', 'r2']
+
+
+def test_an_unknown_plugin_gets_one_warning_naming_it(engine):
+    engine.spawn('a', box(plugin_tag('libgazebo_ros_bumper.so')))
+    engine.spawn('b', box(plugin_tag('libgazebo_ros_bumper.so')), (1, 0, 0, 0))
+    warnings = [t for level, t in engine.log.lines if 'libgazebo_ros_bumper.so' in t]
+    assert len(warnings) == 1 and 'not simulated here' in warnings[0]
+
+
+def test_a_bad_option_is_a_refusal_naming_the_plugin_and_the_option(engine):
+    with pytest.raises(SpawnError, match=r'plugin p \(librecorder.so\): <gain> must be a '
+                                         r"number, got 'fast'"):
+        engine.spawn('a', box(plugin_tag('librecorder.so', '<gain>fast</gain>')))
+
+
+def test_call_soon_runs_work_in_the_loop_before_the_next_step(engine):
+    seen = []
+    engine.call_soon(lambda: seen.append(engine.steps))
+    engine.run_for(0.01)
+    assert seen == [0]
+    assert engine.call_and_wait.__doc__
+
+
+def test_the_guard_and_the_time(engine):
+    engine.spawn('a', box(), (0, 0, 0.1, 0))
+    engine.run_for(1.0)
+    assert engine.time == pytest.approx(1.0) and engine.time_ns == 1000000000
+    assert math.isfinite(engine.models['a'].pose()[0][2])
