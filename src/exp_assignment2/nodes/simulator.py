@@ -38,7 +38,9 @@ class SimulatorNode(object):
         self.params = dict(NODE_PARAMS, **{k: v for k, v in params.items() if k in NODE_PARAMS})
         world = parse_world({k: v for k, v in params.items() if k not in NODE_PARAMS})
         p = self.params
-        camera = {key: p['camera_' + key] for key in ('width', 'height', 'rate', 'hfov')}
+        # the launch files' camera_* arguments, when given, override every camera's sensor
+        camera = {key: p['camera_' + key] for key in ('width', 'height', 'rate', 'hfov')
+                  if p['camera_' + key] not in (None, '')}
         self.engine = Engine(
             time_step=float(p['time_step']), real_time_factor=float(p['real_time_factor']),
             registry=registry(), bounds=world.bounds, egl=p['renderer'] == 'egl',
