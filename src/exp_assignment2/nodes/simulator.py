@@ -28,7 +28,8 @@ NODE_PARAMS = {'real_time_factor': 1.0, 'time_step': 0.01, 'renderer': 'gl', 'pa
                'cmd_timeout': 0.5, 'max_linear': 2.0, 'max_angular': 3.0,
                'camera_width': None, 'camera_height': None, 'camera_rate': None,
                'camera_hfov': None, 'jpeg_quality': 80, 'wait_for_camera': False,
-               'start_timeout': 30.0, 'hidden': [], 'urdf_dir': None, 'world_file': ''}
+               'start_timeout': 30.0, 'hidden': [], 'urdf_dir': None, 'world_file': '',
+               'robot_ns': ''}
 
 
 class SimulatorNode(object):
@@ -38,6 +39,10 @@ class SimulatorNode(object):
         self.params = dict(NODE_PARAMS, **{k: v for k, v in params.items() if k in NODE_PARAMS})
         world = parse_world({k: v for k, v in params.items() if k not in NODE_PARAMS})
         p = self.params
+        if p['robot_ns']:           # the launch files' robot_ns: where the model 'robot' lives
+            for spec in world.models:
+                if spec.name == 'robot':
+                    spec.namespace = str(p['robot_ns']).strip('/')
         # the launch files' camera_* arguments, when given, override every camera's sensor
         camera = {key: p['camera_' + key] for key in ('width', 'height', 'rate', 'hfov')
                   if p['camera_' + key] not in (None, '')}

@@ -16,7 +16,7 @@ from exp_assignment2.ros.clock import RosClock
 from exp_assignment2.ros.dog import RosDogBody, RosDogEyes
 from exp_assignment2.ros.ending import run_until_shutdown
 from exp_assignment2.ros.log import RosLog
-from exp_assignment2.ros.robot_model import turn_sign
+from exp_assignment2.ros.robot_model import robot_name, turn_sign
 from exp_assignment2.smach_api import report_active_state
 
 
@@ -35,7 +35,7 @@ def main():
         return
     body = RosDogBody(turn_sign(), robot)
     dog = Dog(clock, body, eyes, params, random.Random(rospy.get_param('~seed', 0)), RosLog())
-    state_pub = rospy.Publisher('/robot/state', String, queue_size=1, latch=True)
+    state_pub = rospy.Publisher(robot_name('state'), String, queue_size=1, latch=True)
 
     def report(label):
         rospy.loginfo('state: %s', label)

@@ -1,6 +1,7 @@
 """The dog's body and eyes over ROS (scenario A).
 
-:class:`RosDogBody` publishes ``/robot/cmd_vel`` and the head command and
+:class:`RosDogBody` publishes ``<robot ns>/cmd_vel`` (``/robot`` unless the
+node's ``~robot_ns`` says otherwise) and the head command and
 sends robot goals; :class:`RosDogEyes` decodes each camera frame, detects the
 ball, runs the attached servo in the same callback (a frame becomes a
 command without waiting for a loop), notifies the clock, and publishes the
@@ -14,22 +15,23 @@ from sensor_msgs.msg import CompressedImage
 from std_msgs.msg import Float64
 
 from exp_assignment2.ros.frames import decode_frame
+from exp_assignment2.ros.robot_model import robot_name
 from exp_assignment2.vision import BallDetector, annotate, encode_jpeg
 
-CAMERA_TOPIC = '/robot/camera1/image_raw/compressed'
+CAMERA_TOPIC = 'camera1/image_raw/compressed'      # in the robot's namespace
 OUTPUT_TOPIC = '/output/image_raw/compressed'
-CMD_TOPIC = '/robot/cmd_vel'
-HEAD_TOPIC = '/robot/joint_position_controller/command'
+CMD_TOPIC = 'cmd_vel'
+HEAD_TOPIC = 'joint_position_controller/command'
 HOLD_PERIOD = 0.1   # s: a held command is repeated so the drive's cmd_timeout keeps it
 
 
 class CommandPublisher(object):
-    """``/robot/cmd_vel`` in REP 103 terms, whatever the robot's wiring; a
+    """``<robot ns>/cmd_vel`` in REP 103 terms, whatever the robot's wiring; a
     non-zero command is held (repeated) until the next one."""
 
     def __init__(self, sign, topic=CMD_TOPIC):
         self.sign = sign
-        self.pub = rospy.Publisher(topic, Twist, queue_size=1)
+        self.pub = rospy.Publisher(robot_name(topic), Twist, queue_size=1)
         self.held, self.last = None, 0.0
         self.lock = threading.Lock()
         rospy.Timer(rospy.Duration(HOLD_PERIOD), self._hold)
@@ -65,7 +67,8 @@ class RosDogBody(CommandPublisher):
     def __init__(self, sign, robot_client):
         CommandPublisher.__init__(self, sign)
         self.robot = robot_client
-        self.head_pub = rospy.Publisher(HEAD_TOPIC, Float64, queue_size=1, latch=True)
+        self.head_pub = rospy.Publisher(robot_name(HEAD_TOPIC), Float64, queue_size=1,
+                                        latch=True)
 
     def head(self, angle):
         self.head_pub.publish(Float64(angle))
@@ -105,7 +108,7 @@ class RosDogEyes(object):
         self.seen, self.servo = None, None
         self.window = ImageWindow() if gui else None
         self.output_pub = rospy.Publisher(OUTPUT_TOPIC, CompressedImage, queue_size=1)
-        rospy.Subscriber(CAMERA_TOPIC, CompressedImage, self._on_image, queue_size=1,
+        rospy.Subscriber(robot_name(CAMERA_TOPIC), CompressedImage, self._on_image, queue_size=1,
                          buff_size=2 ** 24)
 
     def last_seen(self):

@@ -19,6 +19,7 @@ from exp_assignment2.geometry import yaw_of
 from exp_assignment2.msg import PlanningAction, PlanningFeedback, PlanningResult
 from exp_assignment2.planning import REACHED, goal_error
 from exp_assignment2.ros.log import refusal_log
+from exp_assignment2.ros.robot_model import robot_name
 
 
 class OdomWatch(object):
@@ -122,7 +123,8 @@ class RobotPlanningServer(PlanningServer):
 
     def __init__(self, controller, clock, sign):
         self.controller, self.sign = controller, sign
-        PlanningServer.__init__(self, '/robot_reaching_goal', '/robot/odom', '/robot/cmd_vel',
+        PlanningServer.__init__(self, '/robot_reaching_goal', robot_name('odom'),
+                                robot_name('cmd_vel'),
                                 clock)
 
     def begin(self, target):

@@ -53,12 +53,39 @@ class VelocityCommand(object):
         return 'at most %g m/s and %g rad/s' % (self.max_linear, self.max_angular)
 
 
-def wheel_forward(model, joint):
+DIFF_DRIVE_PLUGIN = 'libgazebo_ros_diff_drive.so'
+
+
+def wheel_forward(urdf, joint):
     """(lateral position, forward speed per unit rate) of a wheel joint: a
     wheel turning about axis ``a`` (root frame) at rate w rolls its hub
     forward at w * r * a_y, and sits at y on the robot."""
-    position, axis = model.urdf.joint_axis_in_root(joint)
+    position, axis = urdf.joint_axis_in_root(joint)
     return position[1], axis[1]
+
+
+def turn_sign(urdf, left, right):
+    """+1 when a positive angular.z turns the robot left (REP 103), -1 when
+    it turns right (wheels named the other way round), 0 when it does not
+    turn: the left joint turns at (v - w s/2) / r, the right at (v + w s/2) / r."""
+    (y_left, f_left), (y_right, f_right) = wheel_forward(urdf, left), wheel_forward(urdf, right)
+    if abs(y_left - y_right) < 1e-9:
+        return 0
+    rate = (-f_left - f_right) / (y_right - y_left)    # yaw rate per unit angular.z
+    return 0 if abs(rate) < 1e-9 else (1 if rate > 0 else -1)
+
+
+def diff_drive_turn_sign(urdf):
+    """:func:`turn_sign` of a parsed URDF's Gazebo diff drive; ValueError if it has none."""
+    plugin = next((p for p in urdf.gazebo.plugins if p.filename == DIFF_DRIVE_PLUGIN), None)
+    if plugin is None:
+        raise ValueError('no Gazebo diff-drive plugin (%s)' % DIFF_DRIVE_PLUGIN)
+    left = plugin.options.get('leftJoint') or 'left_joint'
+    right = plugin.options.get('rightJoint') or 'right_joint'
+    for joint in (left, right):
+        if joint not in urdf.joints:
+            raise ValueError('the diff drive names joint %r, which the URDF lacks' % joint)
+    return turn_sign(urdf, left, right)
 
 
 class DiffDrive(object):
@@ -77,15 +104,8 @@ class DiffDrive(object):
         self.half, self.radius, self.torque = separation / 2.0, diameter / 2.0, torque
 
     def turn_sign(self):
-        """+1 when a positive angular.z turns the robot left (REP 103), -1 when
-        it turns right (wheels named the other way round), 0 when it does not turn."""
-        (y_left, f_left), (y_right, f_right) = (wheel_forward(self.model, j)
-                                                for j in self.joints)
-        if abs(y_left - y_right) < 1e-9:
-            return 0
-        # yaw rate per unit angular.z: wheel speeds -f_l*s/2 and +f_r*s/2
-        rate = (f_left * -self.half - f_right * self.half) / (y_right - y_left)
-        return 0 if abs(rate) < 1e-9 else (1 if rate > 0 else -1)
+        """See :func:`turn_sign`."""
+        return turn_sign(self.model.urdf, *self.joints)
 
     def apply(self):
         v, _, w = self.command.current()
