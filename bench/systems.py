@@ -42,8 +42,8 @@ class NodeStats(object):
             try:
                 uri = master.lookupNode(name)
                 self.pids[name] = xmlrpc.client.ServerProxy(uri).getPid('/benchmark')[2]
-            except Exception:        # a node that is not up is left out of the table
-                pass
+            except (rosgraph.MasterError, OSError, xmlrpc.client.Error):
+                pass         # a node that is not up is left out of the table
         self.start = {n: self._cpu(p) for n, p in self.pids.items()}
         self.t0 = time.monotonic()
 
@@ -129,7 +129,7 @@ def start_master(port=11411):
         try:
             rosgraph.Master('/benchmark').getPid()
             break
-        except Exception:        # not up yet
+        except (rosgraph.MasterError, OSError):        # not up yet
             time.sleep(0.2)
     rospy.set_param('/use_sim_time', True)
     rospy.init_node('benchmark', disable_signals=True)

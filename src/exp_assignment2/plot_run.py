@@ -1,4 +1,5 @@
-"""``plot_run.py BAG [-o PNG]``: draws a recorded run (``record:=true``) as a picture.
+"""A recorded run (``record:=true``) as plain data, for ``plot_run.py BAG [-o PNG]``
+(the command line: :mod:`exp_assignment2.nodes.plot_run`).
 
 The scenario comes from the topics in the bag: ``/robot/odom`` is the dog
 (scenario A), ``/odom`` with ``/state`` is MiRo (scenario B). The bag is read
@@ -7,10 +8,8 @@ definitions stored in the bag, so no catkin build is needed. This module
 turns messages into plain data (a :class:`Run`) and the pure functions below
 cut it into coloured pieces; :mod:`.run_figure` draws it.
 """
-import argparse
 import bisect
 import os
-import sys
 
 from exp_assignment2.behaviour.miro import STATE_PARAM
 
@@ -250,38 +249,3 @@ def read_run(path):
     """Reads a bag into a :class:`Run`; PlotError when it cannot be drawn."""
     scenario, messages = read_bag(path)
     return run_from_messages(os.path.basename(path), scenario, messages)
-
-
-def parse_args(argv):
-    """The command line."""
-    parser = argparse.ArgumentParser(
-        prog='plot_run.py', description='Draw a recorded run (rosbag from record:=true) as a PNG: '
-        'the world from above, paths coloured by state, and a state timeline.')
-    parser.add_argument('bag', help='the bag file (sim_world.launch or miro.launch, record:=true)')
-    parser.add_argument('-o', '--output', help='the PNG to write (default: BAG with .png)')
-    parser.add_argument('--home', nargs=2, type=float, metavar=('X', 'Y'),
-                        help="scenario B: MiRo's home, if not /home_posx, /home_posy's default")
-    parser.add_argument('--person', nargs=2, type=float, metavar=('X', 'Y'),
-                        help="scenario B: the person's place when no gesture says otherwise")
-    return parser.parse_args(argv)
-
-
-def main(argv=None):
-    """Reads the bag, prints the summary, writes the picture. Exits 2 on a bag
-    it cannot draw, 1 when the picture cannot be written."""
-    args = parse_args(sys.argv[1:] if argv is None else argv)
-    output = args.output or os.path.splitext(args.bag)[0] + '.png'
-    try:
-        run = read_run(args.bag)
-    except PlotError as e:
-        sys.stderr.write('plot_run.py: error: %s\n' % e)
-        raise SystemExit(2)
-    print(summary(run))
-    from exp_assignment2 import run_figure    # matplotlib only once there is something to draw
-    try:
-        run_figure.draw(run, output, home=args.home, person=args.person)
-    except (IOError, OSError) as e:
-        sys.stderr.write('plot_run.py: error: cannot write %s: %s\n' % (output, e))
-        raise SystemExit(1)
-    print('wrote %s' % output)
-    return 0

@@ -167,5 +167,5 @@ def node_pid(name):
     try:
         uri = rosgraph.Master('/checker').lookupNode(name)
         return xmlrpc.client.ServerProxy(uri).getPid('/checker')[2]
-    except Exception:
-        return None
+    except (rosgraph.MasterError, OSError, xmlrpc.client.Error):
+        return None         # not running (yet, or any more)

@@ -112,11 +112,12 @@ class Engine(object):
             model = Model(self.physics, name, urdf, pose, namespace, grid, hidden)
         except ValueError as exc:
             raise SpawnError('model %s: %s' % (name, exc))
+        plugins = None
         try:
             plugins = self._load_plugins(model)
-        except Exception:
-            model.remove()
-            raise
+        finally:
+            if plugins is None:      # refused (SpawnError) or broken: the world unchanged
+                model.remove()
         for text in urdf.warnings + urdf.gazebo.warnings:
             self.log.warn('model %s: %s' % (name, text))
         self.models[name] = model
