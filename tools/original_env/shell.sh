@@ -9,7 +9,8 @@
 # that cv2's HighGUI runs on one thread (the original calls cv2.imshow from
 # several rospy callback threads, which hangs Debian's Qt-based OpenCV) and
 # smach / smach_ros / gazebo_msgs fall back to small replacements only where
-# the real module does not import. See tools/original_env/README.md.
+# the real module does not import, and code that mixes tabs and spaces in its
+# indentation is read as Python 2 read it. See tools/original_env/README.md.
 set -eo pipefail
 
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -50,9 +51,12 @@ export ROS_HOME="${ROS_HOME:-$WS/ros_home}"
 
 # The original's scripts start with "#!/usr/bin/env python": Debian has no
 # "python", and another one later on PATH could not import Debian's rospy.
+# bin/python is /usr/bin/python3 that also starts a script mixing tabs and
+# spaces in its indentation with Python 2's tab rule.
 export EXP2_ORIGINAL_BIN="$WS/original_env_bin"
 mkdir -p "$EXP2_ORIGINAL_BIN"
-ln -sfn /usr/bin/python3 "$EXP2_ORIGINAL_BIN/python"
+ln -sfn "$HERE/bin/python" "$EXP2_ORIGINAL_BIN/python"
+ln -sfn "$HERE/bin/python" "$EXP2_ORIGINAL_BIN/python3"
 
 # Decided now, with the real interpreter and the workspace's PYTHONPATH, so a
 # real smach (or smach_ros, gazebo_msgs) is never shadowed.
