@@ -65,6 +65,10 @@ def test_the_fixture_runs_as_python2_indented_it(shell, command):
     assert proc.returncode == 0, proc.stderr
     assert proc.stdout.splitlines() == NODE_OUTPUT + ['argv a b']
     assert proc.stderr == LINE + 'tabs_node.py, tabs_helper.py\n'
+    merged = subprocess.run(command, env=dict(env, PYTHONUNBUFFERED='1'), cwd=str(work),
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            universal_newlines=True, timeout=60).stdout.splitlines()
+    assert merged[:2] == [LINE + 'tabs_node.py, tabs_helper.py', 'count 33']  # line first
     assert digest(work) == before  # the files on disk are never changed
     # no bytecode of the re-indented source (a module Python 3 reads gets its own),
     # so python3 outside the shell (-E: without its PYTHONPATH) still sees the real file
@@ -175,3 +179,34 @@ def test_one_line_per_burst_of_imports(shell):
                             universal_newlines=True, timeout=60).stdout.splitlines()
     assert merged == [LINE + 'tabs_helper.py, other_helper.py', 'imported',
                       LINE + 'tabs_node.py', 'done']
+
+
+CATKIN_RELAY_TEMPLATE = '/usr/share/catkin/cmake/templates/script.py.in'
+
+
+@pytest.mark.skipif(not os.path.exists(CATKIN_RELAY_TEMPLATE), reason='needs catkin')
+def test_catkin_relay_scripts_compile_with_the_tab_rule(shell):
+    """What catkin_install_python puts in a devel space, and rosrun/roslaunch start there."""
+    env, work = shell
+    with open(CATKIN_RELAY_TEMPLATE) as f:
+        relay = f.read().replace('@PYTHON_EXECUTABLE@', PYTHON).replace(
+            '@PYTHON_SCRIPT@', str(work / 'tabs_node.py'))
+    (work / 'devel').mkdir()
+    (work / 'devel' / 'tabs_node.py').write_text(relay)
+    (work / 'devel' / 'tabs_node.py').chmod(0o755)
+    env = dict(env, PYTHONPATH=str(work) + os.pathsep + env['PYTHONPATH'])  # for tabs_helper
+    proc = subprocess.run([str(work / 'devel' / 'tabs_node.py'), 'relayed'],
+                          env=dict(env, PYTHONUNBUFFERED='1'), cwd=str(work / 'devel'),
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          universal_newlines=True, timeout=60)
+    assert proc.returncode == 0, proc.stdout
+    assert proc.stdout.splitlines() == [  # the line comes first, before the node's output
+        LINE + '%s, %s' % (work / 'tabs_node.py', work / 'tabs_helper.py')] + NODE_OUTPUT + [
+        'argv relayed']
+    (work / 'bad.py').write_text('if 1:\n\tx = 1\n    y = 2\n')
+    relay = relay.replace(str(work / 'tabs_node.py'), str(work / 'bad.py'))
+    (work / 'devel' / 'tabs_node.py').write_text(relay)
+    proc = run([str(work / 'devel' / 'tabs_node.py')], env, work)
+    assert 'File "%s", line 3' % (work / 'bad.py') in proc.stderr
+    assert proc.stderr.rstrip().endswith(
+        'IndentationError: unindent does not match any outer indentation level')

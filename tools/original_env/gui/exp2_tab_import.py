@@ -13,9 +13,17 @@ read it (exp2_py2_indent.py):
 * errors keep the file's name and line numbers; a file Python 2 could not
   indent either gets its error from Python's own compiler, as any import does;
 * each file read this way is named on stderr (exp2_tab_report.py).
+
+The script itself is compiled before any hook runs: bin/python starts it
+through exp2_tab_script.py. One more way in is catkin's relay script (what
+``catkin_install_python`` puts in a devel space, and rosrun or roslaunch
+start there): it compiles the real script's text itself with ``compile()``, so
+``install_for_catkin_relay`` gives that relay, and only it, a ``compile`` that
+applies the same rule.
 """
 import importlib.machinery
 import importlib.util
+import os
 import sys
 
 import exp2_code_columns
@@ -126,3 +134,43 @@ def install():
         sys.path_hooks.append(hook)
     # Finders made before now (site, this module's own directory) use the old loader.
     sys.path_importer_cache.clear()
+
+
+# The header of catkin's relay scripts (catkin/cmake/templates/script.py.in).
+CATKIN_RELAY = b'# generated from catkin/cmake/template/script.py.in'
+
+
+def tab_rule_compile(source, filename, mode, flags=0, dont_inherit=False, optimize=-1):
+    """``compile()``, but a file Python 3 refuses for its tabs is read as Python 2 did."""
+    try:
+        return compile(source, filename, mode, flags, dont_inherit, optimize)
+    except IndentationError:
+        if mode != 'exec' or not os.path.isfile(filename):
+            raise
+        with open(filename, 'rb') as script:
+            reading = read_with_tab_rule(script.read(), filename)
+        if reading is None:
+            raise
+    source, code = reading
+    if code is None:  # raises the error Python 2 gave, on the file's line
+        code = compile(source, filename, 'exec', dont_inherit=True)
+    import exp2_tab_report
+    exp2_tab_report.note(filename, script=True)
+    return code
+
+
+def install_for_catkin_relay(main_module, argv):
+    """If the program is a catkin relay script, give it ``tab_rule_compile`` as ``compile``.
+
+    Called at start-up, before the interpreter runs the script in
+    ``main_module``'s namespace; the real script runs in a namespace of its
+    own, with the real builtins.
+    """
+    path = argv[0] if argv else ''
+    try:
+        with open(path, 'rb') as script:
+            head = script.read(512)
+    except (OSError, ValueError):  # -c, -m, a directory, ...
+        return
+    if CATKIN_RELAY in head:
+        main_module.__dict__['compile'] = tab_rule_compile

@@ -40,8 +40,11 @@ _IMPORTLIB_DIR = os.path.join(os.path.dirname(os.__file__), 'importlib') + os.se
 _RUNPY = os.path.join(os.path.dirname(os.__file__), 'runpy.py')
 
 
-def note(path):
-    """Record that ``path`` was read with the tab rule; the line follows (see above)."""
+def note(path, script=False):
+    """Record that ``path`` was read with the tab rule; the line follows (see above).
+
+    ``script``: ``path`` is a script about to run, not a module being imported.
+    """
     with _lock:
         if path not in _pending:
             _pending.append(path)
@@ -54,7 +57,7 @@ def note(path):
     if sys.gettrace() is not None:  # someone else traces this thread: do not interfere
         flush()
         return
-    importer = _importer(sys._getframe(1))
+    importer = None if script else _importer(sys._getframe(1))
     if importer is None:
         # Nobody imports it: a script or ``python -m`` module, about to run.
         _state['tracer'] = _module_code_tracer(path)
@@ -80,12 +83,13 @@ def flush():
 
 
 def _shown(path):
-    """``path`` relative to the current directory when it is below it."""
+    """``path`` relative to the current directory when it is below it (and that is not /)."""
     try:
-        relative = os.path.relpath(path)
+        cwd = os.getcwd()
+        relative = os.path.relpath(path, cwd)
     except (OSError, ValueError):
         return path
-    return path if relative.startswith(os.pardir) else relative
+    return path if relative.startswith(os.pardir) or cwd == os.sep else relative
 
 
 def _is_machinery(frame):

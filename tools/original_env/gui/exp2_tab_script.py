@@ -63,7 +63,7 @@ def main():
         if code is None:  # raises the error Python 2 gave, on the file's line
             code = compile(source, filename, 'exec', dont_inherit=True)
         import exp2_tab_report
-        exp2_tab_report.note(filename)
+        exp2_tab_report.note(filename, script=True)
     namespace = sys.modules['__main__'].__dict__
     namespace.clear()
     namespace.update(__name__='__main__', __doc__=None, __package__=None,
