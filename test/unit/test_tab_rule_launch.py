@@ -107,6 +107,8 @@ def test_other_uses_of_the_interpreter_are_the_interpreters(shell):
     assert run(['python3', '-'], env, work, stdin=code).stdout == '303\n'
     assert run(['python3', '-u', '-W', 'ignore', '-m', 'tabs_node'], env,
                work).stdout.splitlines() == NODE_OUTPUT + ['argv ']
+    # a script read from a pipe is read by the interpreter only
+    assert run(['bash', '-c', 'python3 <(echo "print(7)")'], env, work).stdout == '7\n'
     version = run(['python3', '--version'], env, work)
     assert version.stdout == run([PYTHON, '--version'], env, work).stdout
     assert run(['python3', '-Wignore', '-X', 'utf8', '--', 'tabs_node.py', '-c'], env,

@@ -167,10 +167,12 @@ def install_for_catkin_relay(main_module, argv):
     own, with the real builtins.
     """
     path = argv[0] if argv else ''
+    if not os.path.isfile(path):  # -c, -m, a directory; never read a pipe (python3 <(...))
+        return
     try:
         with open(path, 'rb') as script:
             head = script.read(512)
-    except (OSError, ValueError):  # -c, -m, a directory, ...
+    except OSError:
         return
     if CATKIN_RELAY in head:
         main_module.__dict__['compile'] = tab_rule_compile
