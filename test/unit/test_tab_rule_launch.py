@@ -1,7 +1,8 @@
 """Python 2's tab rule of the original-code shell, in real interpreters (no ROS master).
 
 The shell's environment is made as shell.sh makes it: env.py's variables and
-a bin directory linking ``python`` and ``python3`` to tools/original_env/bin/python.
+a bin directory with ``python`` and ``python3``, copies of
+tools/original_env/python_launcher.sh.
 The fixtures (test/original_tabs: a script and the module it imports, both
 mixing tabs and spaces) are copied to a temporary directory and started the
 ways a user starts them; test/test_original_env_tabs.py adds rosrun and
@@ -32,7 +33,8 @@ def shell(tmp_path):
     bin_dir, work = tmp_path / 'bin', tmp_path / 'work'
     bin_dir.mkdir()
     for name in ('python', 'python3'):
-        (bin_dir / name).symlink_to(os.path.join(ENV_DIR, 'bin', 'python'))
+        shutil.copy(os.path.join(ENV_DIR, 'python_launcher.sh'), str(bin_dir / name))
+        (bin_dir / name).chmod(0o755)
     shutil.copytree(FIXTURES, str(work))
     (work / 'tabs_node.py').chmod(0o755)
     drop = ('DISPLAY', 'EXP2_TAB_RULE', 'PYTHONDONTWRITEBYTECODE', 'PYTHONSTARTUP')

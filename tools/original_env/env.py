@@ -9,8 +9,8 @@ the environment it will inherit (workspace sourced). It prints shell
   *now*: smach, smach_ros, gazebo_msgs. Each is checked in a fresh interpreter
   with the shims decided so far (smach_ros needs a smach), so a real module
   is never shadowed; the shims also come last.
-* PATH: $EXP2_ORIGINAL_BIN (where shell.sh links ``python`` and ``python3`` to
-  bin/python: /usr/bin/python3, with Python 2's tab rule for a script, also
+* PATH: $EXP2_ORIGINAL_BIN (where shell.sh puts ``python`` and ``python3``,
+  python_launcher.sh: /usr/bin/python3, with Python 2's tab rule for a script, also
   for ``#!/usr/bin/env python`` scripts such as the original's) and /usr/bin
   before the rest.
 * EXP2_ORIGINAL_ENV: the one-line summary shell.sh prints.

@@ -14,7 +14,7 @@ read it (exp2_py2_indent.py):
   indent either gets its error from Python's own compiler, as any import does;
 * each file read this way is named on stderr (exp2_tab_report.py).
 
-The script itself is compiled before any hook runs: bin/python starts it
+The script itself is compiled before any hook runs: python_launcher.sh starts it
 through exp2_tab_script.py. One more way in is catkin's relay script (what
 ``catkin_install_python`` puts in a devel space, and rosrun or roslaunch
 start there): it compiles the real script's text itself with ``compile()``, so

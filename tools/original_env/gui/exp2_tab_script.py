@@ -2,7 +2,7 @@
 
 The interpreter compiles its script before any start-up hook could help, so
 the ``python`` and ``python3`` of the original-code shell
-(tools/original_env/bin/python) start a script whose indentation has a tab as
+(tools/original_env/python_launcher.sh) start a script whose indentation has a tab as
 
     /usr/bin/python3 [OPTIONS] -c 'import exp2_tab_script; exp2_tab_script.main()' SCRIPT ARGS
 

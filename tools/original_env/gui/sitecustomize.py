@@ -8,7 +8,7 @@ environment. It does three things:
    PYTHONPATH), so nothing the system configured is lost;
 2. unless EXP2_TAB_RULE is 0, installs the import hook that reads a module
    Python 3 refuses for tabs in its indentation as Python 2 did
-   (exp2_tab_import.py; the script itself is bin/python's business, or
+   (exp2_tab_import.py; the script itself is python_launcher.sh's business, or
    that of a catkin relay script's ``compile``);
 3. when a display is configured (DISPLAY, WAYLAND_DISPLAY or an explicit
    QT_QPA_PLATFORM such as ``offscreen``) and EXP2_CV2_GUI_THREAD is not 0,

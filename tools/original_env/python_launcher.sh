@@ -1,6 +1,6 @@
 #!/bin/sh
 # `python` and `python3` of the original-code shell (tools/original_env/shell.sh
-# links them into $EXP2_ORIGINAL_BIN, first on PATH, so `python3 x.py`,
+# copies this file to both in $EXP2_ORIGINAL_BIN, first on PATH, so `python3 x.py`,
 # `#!/usr/bin/env python` scripts, rosrun and roslaunch all start here).
 #
 # It is /usr/bin/python3, except for one case: a script (`python3 [OPTIONS]
