@@ -1,6 +1,8 @@
-"""Python 2's tab rule inside ``bash tools/run original-env``, every way a script starts.
+"""Python 2's tab rule in the original-code shell, every way a script starts.
 
-The fixture node (test/original_tabs/tabs_node.py, which imports
+The shell is tools/original_env/shell.sh (what ``bash tools/run original-env``
+runs after the set-up) on the workspace this test runs in: the one sourced
+(tools/run test sources it), never another. The fixture node (test/original_tabs/tabs_node.py, which imports
 tabs_helper.py; both mix tabs and spaces as original student code does) is
 put in a catkin-less ROS package on ROS_PACKAGE_PATH, then started in one
 original-code shell as ``python3 x.py``, ``python x.py``, ``./x.py``,
@@ -39,6 +41,17 @@ LAUNCH = '''<launch>
 WAYS = ('python3', 'python', './', 'rosrun', 'roslaunch')
 
 
+def sourced_workspace():
+    """The catkin workspace whose devel space is sourced here, or None."""
+    for prefix in os.environ.get('CMAKE_PREFIX_PATH', '').split(os.pathsep):
+        if os.path.basename(prefix) == 'devel' and os.path.isfile(
+                os.path.join(prefix, 'setup.bash')):
+            workspace = os.path.dirname(prefix)
+            if os.path.exists(os.path.join(workspace, 'src', 'exp_assignment2')):
+                return workspace
+    return None
+
+
 def free_port():
     with socket.socket() as s:
         s.bind(('localhost', 0))
@@ -59,6 +72,9 @@ def package(tmp_path):
 
 @pytest.mark.skipif(shutil.which('rosrun', path='/usr/bin') is None, reason='needs ROS')
 def test_every_way_of_starting_reads_python2s_indentation(package, tmp_path):
+    workspace = sourced_workspace()
+    if workspace is None:
+        pytest.skip('no sourced catkin workspace (run it through tools/run test)')
     port = free_port()
     script = '\n'.join([
         'export ROS_PACKAGE_PATH=%s:$ROS_PACKAGE_PATH' % package,
@@ -70,9 +86,10 @@ def test_every_way_of_starting_reads_python2s_indentation(package, tmp_path):
         'echo "== rosrun"; rosrun tabs_fixture tabs_node.py way rosrun 2>&1',
         'echo "== roslaunch"; roslaunch -p %d tabs_fixture tabs.launch 2>&1' % port,
     ])
-    env = dict(os.environ, ROS_HOME=str(tmp_path / 'ros_home'), PYTHONUNBUFFERED='1')
+    env = dict(os.environ, ROS_HOME=str(tmp_path / 'ros_home'), PYTHONUNBUFFERED='1',
+               EXP2_WS=workspace)
     env['PATH'] = '/usr/bin:' + env.get('PATH', '')
-    proc = subprocess.run(['bash', os.path.join(REPO, 'tools', 'run'), 'original-env',
+    proc = subprocess.run(['bash', os.path.join(REPO, 'tools', 'original_env', 'shell.sh'),
                            'bash', '-c', script], env=env, stdout=subprocess.PIPE,
                           stderr=subprocess.STDOUT, universal_newlines=True, timeout=300)
     assert proc.returncode == 0, proc.stdout[-3000:]
