@@ -9,7 +9,8 @@ the environment it will inherit (workspace sourced). It prints shell
   *now*: smach, smach_ros. Each is checked in a fresh interpreter
   with the shims decided so far (smach_ros needs a smach), so a real module
   is never shadowed; the shims also come last.
-* PATH: $EXP2_ORIGINAL_BIN (where shell.sh links ``python`` to /usr/bin/python3,
+* PATH: $EXP2_ORIGINAL_BIN (where shell.sh puts ``python`` and ``python3``,
+  python_launcher.sh: /usr/bin/python3, with Python 2's tab rule for a script, also
   for ``#!/usr/bin/env python`` scripts such as the original's) and /usr/bin
   before the rest.
 * EXP2_ORIGINAL_ENV: the one-line summary shell.sh prints.
@@ -54,6 +55,10 @@ def compute(environ):
         else:
             shims.append(directory)
             notes.append('%s: shim' % name)
+    if environ.get('EXP2_TAB_RULE', '1') == '0':
+        notes.append("tabs: Python 3's rule (EXP2_TAB_RULE=0)")
+    else:
+        notes.append("tabs: Python 2's rule where Python 3 refuses")
     if environ.get('EXP2_CV2_GUI_THREAD', '1') == '0':
         notes.append('cv2 GUI: unchanged (EXP2_CV2_GUI_THREAD=0)')
     elif any(environ.get(v) for v in ('DISPLAY', 'WAYLAND_DISPLAY', 'QT_QPA_PLATFORM')):

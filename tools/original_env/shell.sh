@@ -9,7 +9,8 @@
 # that cv2's HighGUI runs on one thread (the original calls cv2.imshow from
 # several rospy callback threads, which hangs Debian's Qt-based OpenCV) and
 # smach / smach_ros fall back to small replacements only where
-# the real module does not import. See tools/original_env/README.md.
+# the real module does not import, and code that mixes tabs and spaces in its
+# indentation is read as Python 2 read it. See tools/original_env/README.md.
 set -eo pipefail
 
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -50,9 +51,16 @@ export ROS_HOME="${ROS_HOME:-$WS/ros_home}"
 
 # The original's scripts start with "#!/usr/bin/env python": Debian has no
 # "python", and another one later on PATH could not import Debian's rospy.
+# python_launcher.sh is /usr/bin/python3 that also starts a script mixing tabs
+# and spaces in its indentation with Python 2's tab rule. Copied (renamed into
+# place, so a program starting now never misses it), not linked: an executable
+# file in the package would be one catkin does not install.
 export EXP2_ORIGINAL_BIN="$WS/original_env_bin"
 mkdir -p "$EXP2_ORIGINAL_BIN"
-ln -sfn /usr/bin/python3 "$EXP2_ORIGINAL_BIN/python"
+for name in python python3; do
+  install -m 0755 "$HERE/python_launcher.sh" "$EXP2_ORIGINAL_BIN/.$name.$$"
+  mv -f "$EXP2_ORIGINAL_BIN/.$name.$$" "$EXP2_ORIGINAL_BIN/$name"
+done
 
 # Decided now, with the real interpreter and the workspace's PYTHONPATH, so a
 # real smach (or smach_ros) is never shadowed.

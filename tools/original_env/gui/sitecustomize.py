@@ -2,11 +2,15 @@
 
 Python imports ``sitecustomize`` at start-up from the first directory of
 sys.path that has one; this directory is on PYTHONPATH only inside that
-environment. It does two things:
+environment. It does three things:
 
 1. runs the ``sitecustomize`` it shadows (Debian's, or one further down
    PYTHONPATH), so nothing the system configured is lost;
-2. when a display is configured (DISPLAY, WAYLAND_DISPLAY or an explicit
+2. unless EXP2_TAB_RULE is 0, installs the import hook that reads a module
+   Python 3 refuses for tabs in its indentation as Python 2 did
+   (exp2_tab_import.py; the script itself is python_launcher.sh's business, or
+   that of a catkin relay script's ``compile``);
+3. when a display is configured (DISPLAY, WAYLAND_DISPLAY or an explicit
    QT_QPA_PLATFORM such as ``offscreen``) and EXP2_CV2_GUI_THREAD is not 0,
    arranges for cv2's HighGUI calls to run on one GUI thread once cv2 is
    imported (see exp2_cv2_gui.py for why). cv2 itself is not imported here.
@@ -39,6 +43,10 @@ def _display_configured():
 
 
 _run_shadowed_sitecustomize()
+if os.environ.get('EXP2_TAB_RULE', '1') != '0':
+    import exp2_tab_import
+    exp2_tab_import.install()
+    exp2_tab_import.install_for_catkin_relay(sys.modules['__main__'], getattr(sys, 'argv', []))
 if os.environ.get('EXP2_CV2_GUI_THREAD', '1') != '0' and _display_configured():
     import exp2_cv2_gui
     exp2_cv2_gui.install()

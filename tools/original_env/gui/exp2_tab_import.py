@@ -1,0 +1,178 @@
+"""Imports with Python 2's tab rule (installed by sitecustomize.py in the original-code shell).
+
+``install()`` replaces the import system's finder for directories by one whose
+loader for ``.py`` files is ``TabRuleLoader``. That loader changes nothing for a
+file Python 3 compiles, or refuses for any reason but its indentation. Only a
+file that has tabs in its indentation and that Python 3 refuses with
+TabError/IndentationError is handed to the compiler re-indented as Python 2
+read it (exp2_py2_indent.py):
+
+* the file on disk is never changed, and no bytecode of the re-indented
+  source is written to ``__pycache__``, so a later plain python3 still sees the
+  real file;
+* errors keep the file's name and line numbers; a file Python 2 could not
+  indent either gets its error from Python's own compiler, as any import does;
+* each file read this way is named on stderr (exp2_tab_report.py).
+
+The script itself is compiled before any hook runs: python_launcher.sh starts it
+through exp2_tab_script.py. One more way in is catkin's relay script (what
+``catkin_install_python`` puts in a devel space, and rosrun or roslaunch
+start there): it compiles the real script's text itself with ``compile()``, so
+``install_for_catkin_relay`` gives that relay, and only it, a ``compile`` that
+applies the same rule.
+"""
+import importlib.machinery
+import importlib.util
+import os
+import sys
+
+import exp2_code_columns
+import exp2_py2_indent
+
+
+def read_with_tab_rule(data, path):
+    """Python 2's reading of source bytes Python 3 refuses for their indentation.
+
+    ``(source, code)``: the re-indented source and its code, whose columns
+    point into the lines as they are in the file; ``code`` is None when
+    ``source`` does not compile either (compiling it raises Python 2's error
+    with the file's line). None when not needed: no tab in the indentation,
+    Python 3 compiles ``data``, refuses it for something else than its
+    indentation (it reports that itself), or the tab rule changes nothing.
+    """
+    if not exp2_py2_indent.has_tab_indentation(data):
+        return None
+    try:
+        compile(data, path, 'exec', dont_inherit=True)
+    except IndentationError:  # TabError is one
+        reading = exp2_py2_indent.python2_source(data)
+    except (SyntaxError, ValueError):
+        return None
+    else:
+        return None
+    if reading is None:
+        return None
+    source, shifts = reading
+    try:
+        code = compile(source, path, 'exec', dont_inherit=True)
+    except (SyntaxError, ValueError):
+        return source, None
+    return source, exp2_code_columns.shift_columns(code, shifts)
+
+
+class TabRuleLoader(importlib.machinery.SourceFileLoader):
+    """SourceFileLoader that reads a file Python 3 refuses for its tabs as Python 2 did.
+
+    It acts in ``get_data``, which hands the import system the re-indented
+    source, so every failure still comes from the import system's own steps,
+    with their clean tracebacks.
+    """
+
+    # Sources read with the tab rule: their bytecode is not cached.
+    tab_rule_sources = set()
+
+    def get_data(self, path):
+        self.__dict__.pop('source_to_code', None)  # from an earlier reading of the file
+        data = super().get_data(path)
+        if not path.endswith(tuple(importlib.machinery.SOURCE_SUFFIXES)):
+            return data  # bytecode
+        reading = read_with_tab_rule(data, path)
+        if reading is None:
+            return data
+        source, code = reading
+        if code is not None:
+            # get_code compiles what get_data returned: hand it the code made
+            # here, whose columns fit the file. (Without it, the import
+            # system's compile of ``source`` gives Python 2's error.)
+            self.source_to_code = lambda data, path, _optimize=-1: code
+            TabRuleLoader.tab_rule_sources.add(path)
+            import exp2_tab_report
+            exp2_tab_report.note(path)
+        return source
+
+    def get_source(self, fullname):
+        """The file as it is on disk (for tools that show source)."""
+        path = self.get_filename(fullname)
+        try:
+            data = super().get_data(path)
+        except OSError as exc:
+            raise ImportError('source not available through get_data()', name=fullname) from exc
+        return importlib.util.decode_source(data)
+
+    def set_data(self, path, data, *, _mode=0o666):
+        try:
+            source = importlib.util.source_from_cache(path)
+        except ValueError:
+            source = None
+        if source in TabRuleLoader.tab_rule_sources:
+            return  # a later python3 without the tab rule must see the real file
+        super().set_data(path, data, _mode=_mode)
+
+
+def _is_tab_rule_hook(hook):
+    return getattr(hook, 'exp2_tab_rule', False)
+
+
+def _is_default_file_finder_hook(hook):
+    return getattr(hook, '__qualname__', '').startswith('FileFinder.path_hook.')
+
+
+def install():
+    """Put ``TabRuleLoader`` in the import system for every directory (idempotent)."""
+    if any(_is_tab_rule_hook(hook) for hook in sys.path_hooks):
+        return
+    hook = importlib.machinery.FileFinder.path_hook(
+        (importlib.machinery.ExtensionFileLoader, importlib.machinery.EXTENSION_SUFFIXES),
+        (TabRuleLoader, importlib.machinery.SOURCE_SUFFIXES),
+        (importlib.machinery.SourcelessFileLoader, importlib.machinery.BYTECODE_SUFFIXES))
+    hook.exp2_tab_rule = True
+    for index, existing in enumerate(sys.path_hooks):
+        if _is_default_file_finder_hook(existing):
+            sys.path_hooks[index] = hook
+            break
+    else:
+        sys.path_hooks.append(hook)
+    # Finders made before now (site, this module's own directory) use the old loader.
+    sys.path_importer_cache.clear()
+
+
+# The header of catkin's relay scripts (catkin/cmake/templates/script.py.in).
+CATKIN_RELAY = b'# generated from catkin/cmake/template/script.py.in'
+
+
+def tab_rule_compile(source, filename, mode, flags=0, dont_inherit=False, optimize=-1):
+    """``compile()``, but a file Python 3 refuses for its tabs is read as Python 2 did."""
+    try:
+        return compile(source, filename, mode, flags, dont_inherit, optimize)
+    except IndentationError:
+        if mode != 'exec' or not os.path.isfile(filename):
+            raise
+        with open(filename, 'rb') as script:
+            reading = read_with_tab_rule(script.read(), filename)
+        if reading is None:
+            raise
+    source, code = reading
+    if code is None:  # raises the error Python 2 gave, on the file's line
+        code = compile(source, filename, 'exec', dont_inherit=True)
+    import exp2_tab_report
+    exp2_tab_report.note(filename, script=True)
+    return code
+
+
+def install_for_catkin_relay(main_module, argv):
+    """If the program is a catkin relay script, give it ``tab_rule_compile`` as ``compile``.
+
+    Called at start-up, before the interpreter runs the script in
+    ``main_module``'s namespace; the real script runs in a namespace of its
+    own, with the real builtins.
+    """
+    path = argv[0] if argv else ''
+    if not os.path.isfile(path):  # -c, -m, a directory; never read a pipe (python3 <(...))
+        return
+    try:
+        with open(path, 'rb') as script:
+            head = script.read(512)
+    except OSError:
+        return
+    if CATKIN_RELAY in head:
+        main_module.__dict__['compile'] = tab_rule_compile
