@@ -11,6 +11,7 @@ import rospy
 import rostest
 from std_msgs.msg import Float64MultiArray, String
 from std_srvs.srv import Empty
+from visualization_msgs.msg import MarkerArray
 
 from checks import Pose, Rosout, Watch, clock, wait_for_subscribers, wait_until
 from exp_assignment2.msg import Gesture
@@ -85,6 +86,23 @@ class TestMiro(unittest.TestCase):
         self.assertTrue(wait_until(lambda: self.arrived_at(8, 2, before), 30.0),
                         'arrivals: %s' % [a.data for a in self.arrivals.all[before:]])
         self.assertTrue(wait_until(lambda: self.state() == 'NORMAL', 10.0))
+
+    def test_5_rviz_shows_the_grid_home_and_the_person_where_the_gesture_put_them(self):
+        markers = Watch('/gazebo/world_markers', MarkerArray)
+        self.assertTrue(wait_until(lambda: markers.msg is not None, 10.0))
+
+        def person_at(x, y):
+            return [m for m in markers.msg.markers if m.ns == 'person'
+                    and abs(m.pose.position.x - x) < 0.3 and abs(m.pose.position.y - y) < 0.3]
+        self.assertTrue(wait_until(lambda: person_at(4, 4), 10.0),
+                        'the gesture of test 4 put the person at (4, 4)')
+        spaces = {m.ns for m in markers.msg.markers}
+        self.assertTrue({'home', 'person', 'grid'} <= spaces, spaces)
+        home = [m for m in markers.msg.markers if m.ns == 'home'][0]
+        self.assertEqual((home.pose.position.x, home.pose.position.y), (3.0, 3.0))
+        grid = [m for m in markers.msg.markers if m.ns == 'grid'][0]
+        xs = sorted({round(p.x, 3) for p in grid.points})
+        self.assertEqual(xs, [float(x) for x in range(11)])
 
 
 if __name__ == '__main__':

@@ -15,9 +15,11 @@ from rosgraph_msgs.msg import Log
 from sensor_msgs.msg import CameraInfo, CompressedImage, JointState
 from std_msgs.msg import Float64
 from std_srvs.srv import Empty
+from visualization_msgs.msg import MarkerArray
 
 from checks import Pose, Rosout, Watch, clock, wait_for_subscribers, wait_until
 from exp_assignment2.geometry import yaw_of
+from exp_assignment2.sim import urdf
 from exp_assignment2.vision import BallDetector, decode_jpeg
 
 SPAWN = (-5.0, 7.0, math.pi)
@@ -96,10 +98,20 @@ class TestSimulator(unittest.TestCase):
         self.assertTrue(wait_until(lambda: self.ball.msg.pose.pose.position.z == 0.5, 5.0))
         self.assertIsNotNone(ball_in(self.image.after(self.ball.msg.header.stamp.to_sec())))
 
+    def test_rviz_sees_the_walls_the_person_the_kennel_and_the_grid(self):
+        markers = Watch('/gazebo/world_markers', MarkerArray).next(10.0)
+        spaces = {m.ns for m in markers.markers}
+        self.assertTrue({'arena', 'human', 'kennel', 'grid'} <= spaces, spaces)
+        self.assertNotIn('robot', spaces)           # robots are shown by their descriptions
+        walls = [m for m in markers.markers if m.ns == 'arena' and m.scale.z == 1.0]
+        self.assertEqual(sorted(round(abs(m.pose.position.x) + abs(m.pose.position.y), 1)
+                                for m in walls), [9.4] * 4)
+        self.assertTrue(all(m.header.frame_id == 'odom' for m in markers.markers[1:]))
+
     def test_camera_info_is_an_800_px_pinhole_with_80_degrees(self):
         info = self.info.next()
         self.assertEqual((info.width, info.height), (800, 800))
-        self.assertAlmostEqual(info.K[0], 800 / (2 * math.tan(math.radians(40))), places=6)
+        self.assertAlmostEqual(info.K[0], 800 / (2 * math.tan(1.3962634 / 2)), places=6)
         self.assertEqual((info.K[2], info.K[5]), (400.0, 400.0))
         self.assertEqual(info.header.frame_id, 'camera_link')
 
@@ -155,9 +167,11 @@ class TestSimulator(unittest.TestCase):
         self.head.publish(Float64(0.6))
         clock().sleep(1.5)
         self.assertAlmostEqual(head(), 0.6, delta=0.03)
-        self.head.publish(Float64(3.0))
-        clock().sleep(2.0)
-        self.assertAlmostEqual(head(), math.pi / 2, delta=0.03)
+        upper = urdf.parse(rospy.get_param('/robot/robot_description')).joints[
+            'head_joint'].upper
+        self.head.publish(Float64(upper + 1.0))
+        clock().sleep(3.0)
+        self.assertAlmostEqual(head(), upper, delta=0.03)
         self.head.publish(Float64(0.0))
         clock().sleep(1.5)
 

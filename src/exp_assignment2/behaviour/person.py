@@ -113,15 +113,23 @@ class SimulatedPerson(object):
 class Person(object):
     """Where the person is and where they point."""
 
-    def __init__(self, default=grid.PERSON, simulated=None):
+    def __init__(self, default=grid.PERSON, simulated=None, on_move=None):
         self.default, self.simulated = tuple(default), simulated
         self.lock = threading.Lock()
         self.gesture = None          # ((px, py), (gx, gy)), the last real one
+        self.on_move, self.place = on_move, tuple(default)   # told where the person stands
 
     def saw_gesture(self, person, point):
         """A real gesture arrived (any thread)."""
         with self.lock:
             self.gesture = (tuple(person), tuple(point))
+        self._moved(tuple(person))
+
+    def _moved(self, place):
+        if place != self.place:
+            self.place = place
+            if self.on_move is not None:
+                self.on_move(place)
 
     def pointing(self, fallback=None):
         """Where the last real gesture points, else ``fallback``."""
@@ -135,5 +143,7 @@ class Person(object):
             if self.gesture is not None:
                 return self.gesture
         if self.simulated is not None:
-            return self.simulated.gesture()
+            seen = self.simulated.gesture()
+            self._moved(tuple(seen[0]))
+            return seen
         return self.default, None

@@ -6,8 +6,9 @@ It reads its ``~`` parameters (its own, :data:`NODE_PARAMS`, and the world:
 ``config/world_*.yaml`` or an SDF ``~world_file``), spawns the world's models
 (each brings its plugins in its URDF's ``<gazebo>`` tags), publishes
 ``/clock`` after every step and serves Gazebo's services and topics under
-its name (``/gazebo/...``): see :mod:`exp_assignment2.ros.gazebo_world` and
-:mod:`exp_assignment2.ros.gazebo_state`.
+its name (``/gazebo/...``): see :mod:`exp_assignment2.ros.gazebo_world`,
+:mod:`exp_assignment2.ros.gazebo_state` and, for rviz,
+:mod:`exp_assignment2.ros.world_markers`.
 """
 import os
 import threading
@@ -19,9 +20,10 @@ from rosgraph_msgs.msg import Clock
 from exp_assignment2.ros.gazebo_state import GazeboState
 from exp_assignment2.ros.gazebo_world import GazeboWorld
 from exp_assignment2.ros.log import RosLog
+from exp_assignment2.ros.world_markers import WorldMarkers
 from exp_assignment2.sim.engine import Engine
 from exp_assignment2.sim.plugins import registry
-from exp_assignment2.sim.world import parse_world
+from exp_assignment2.sim.world import parse_model, parse_world
 
 # The node's own parameters; every other ~ parameter is the world's.
 NODE_PARAMS = {'real_time_factor': 1.0, 'time_step': 0.01, 'renderer': 'gl', 'paused': False,
@@ -29,7 +31,7 @@ NODE_PARAMS = {'real_time_factor': 1.0, 'time_step': 0.01, 'renderer': 'gl', 'pa
                'camera_width': None, 'camera_height': None, 'camera_rate': None,
                'camera_hfov': None, 'jpeg_quality': 80, 'wait_for_camera': False,
                'start_timeout': 30.0, 'hidden': [], 'urdf_dir': None, 'world_file': '',
-               'robot_ns': ''}
+               'robot_ns': '', 'poses': {}}
 
 
 class SimulatorNode(object):
@@ -39,10 +41,12 @@ class SimulatorNode(object):
         self.params = dict(NODE_PARAMS, **{k: v for k, v in params.items() if k in NODE_PARAMS})
         world = parse_world({k: v for k, v in params.items() if k not in NODE_PARAMS})
         p = self.params
-        if p['robot_ns']:           # the launch files' robot_ns: where the model 'robot' lives
-            for spec in world.models:
-                if spec.name == 'robot':
-                    spec.namespace = str(p['robot_ns']).strip('/')
+        for spec in world.models:
+            if spec.name == 'robot' and p['robot_ns']:   # the launch files' robot_ns
+                spec.namespace = str(p['robot_ns']).strip('/')
+            if spec.name in (p['poses'] or {}):          # e.g. miro.launch's home_x, home_y
+                spec.pose = parse_model(dict(name=spec.name, urdf='-',
+                                             pose=p['poses'][spec.name])).pose
         # the launch files' camera_* arguments, when given, override every camera's sensor
         camera = {key: p['camera_' + key] for key in ('width', 'height', 'rate', 'hfov')
                   if p['camera_' + key] not in (None, '')}
@@ -70,6 +74,7 @@ class SimulatorNode(object):
             raise
         self.world = GazeboWorld(self.engine)
         self.state = GazeboState(self.engine, self.world)
+        self.markers = WorldMarkers(self.engine)
         rospy.loginfo('simulator: %d models, step %.4f s, real_time_factor %g%s',
                       len(self.engine.models), self.engine.time_step, self.engine.pacer.rtf,
                       ', paused' if self.engine.paused else '')

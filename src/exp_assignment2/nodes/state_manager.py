@@ -7,6 +7,7 @@ the state on ``/state`` (latched) and in the original's ``/state`` parameter.
 import random
 
 import rospy
+from gazebo_msgs.msg import ModelState
 from std_msgs.msg import String
 
 from exp_assignment2 import grid
@@ -17,6 +18,19 @@ from exp_assignment2.ros.ending import run_until_shutdown
 from exp_assignment2.ros.log import RosLog, refusal_log
 from exp_assignment2.ros.miro import RosMiroBody, listen
 from exp_assignment2.smach_api import report_active_state
+
+
+def person_model_mover():
+    """Moves the world's ``person`` model (rviz shows it, see world_miro.yaml)
+    where a gesture puts the person, through Gazebo's set_model_state topic."""
+    pub = rospy.Publisher('/gazebo/set_model_state', ModelState, queue_size=10)
+
+    def move(place):
+        state = ModelState(model_name='person')
+        state.pose.position.x, state.pose.position.y = place
+        state.pose.orientation.z, state.pose.orientation.w = 1.0, 0.0   # facing -x
+        pub.publish(state)
+    return move
 
 
 def main():
@@ -34,7 +48,8 @@ def main():
     clock, log = RosClock(), RosLog()
     simulated = (SimulatedPerson(random.Random(seed))
                  if rospy.get_param('~simulate_person', True) else None)
-    ears, person = Ears(clock, log, params.voice_timeout), Person(where, simulated)
+    ears = Ears(clock, log, params.voice_timeout)
+    person = Person(where, simulated, on_move=person_model_mover())
     listen(ears, person, refusal_log)
     if not clock.wait_for_time():
         return
