@@ -13,7 +13,7 @@ import numpy as np
 
 from exp_assignment2.sim.camera import CameraSpec
 from exp_assignment2.sim.offline import make_engine
-from exp_assignment2.vision import BallDetector, decode_jpeg, encode_jpeg
+from exp_assignment2.vision import BallDetector, decode_jpeg, encode_jpeg, vision_scale
 
 RENDERERS = ('gl', 'egl', 'tiny')
 
@@ -80,17 +80,33 @@ def bench_render(sizes, frames=60):
 
 
 def bench_vision(size, frames=200):
-    """ms to decode and detect the ball in real frames of the default scene."""
+    """ms per real frame of the default scene: JPEG decode and ball detection,
+    at full size (``ms``: the original's pipeline) and as the state machine
+    runs them (``node_ms``: decoded at 1/vision_scale, detected there)."""
     scene = Scene('gl')
     cam, jpegs = camera(size), []
     for _ in range(20):      # the ball at a few places in view
         scene.engine.models['ball'].move_kinematic(0.0, -0.05, 0.0)
         jpegs.append(encode_jpeg(scene.frame(cam), 80))
     scene.close()
-    detector, found = BallDetector(), []
-    ms = median_ms(lambda: found.append(detector.detect(decode_jpeg(jpegs[len(found) % 20]))
-                                        is not None), frames)
-    return dict(ms=ms, frames_with_ball=sum(found) / float(len(found)))
+    detector, scale = BallDetector(), vision_scale(size)
+    decoded = [decode_jpeg(j) for j in jpegs]
+    reduced = [decode_jpeg(j, scale) for j in jpegs]
+    i, found = iter(range(10 ** 9)), []
+
+    def pick(items):
+        return items[next(i) % len(items)]
+    out = dict(scale=scale,
+               decode_ms=median_ms(lambda: decode_jpeg(pick(jpegs)), frames),
+               detect_ms=median_ms(lambda: detector.detect(pick(decoded)), frames),
+               decode_reduced_ms=median_ms(lambda: decode_jpeg(pick(jpegs), scale), frames),
+               detect_reduced_ms=median_ms(
+                   lambda: found.append(detector.detect(pick(reduced), scale) is not None),
+                   frames))
+    out['ms'] = out['decode_ms'] + out['detect_ms']
+    out['node_ms'] = out['decode_reduced_ms'] + out['detect_reduced_ms']
+    out['frames_with_ball'] = sum(found) / float(len(found))
+    return out
 
 
 def side_by_side(path, size=400):

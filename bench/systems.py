@@ -9,7 +9,7 @@ import xmlrpc.client
 import rosgraph
 import rospy
 from geometry_msgs.msg import Twist
-from sensor_msgs.msg import CompressedImage
+from sensor_msgs.msg import CompressedImage, Image
 
 CLK_TCK = os.sysconf('SC_CLK_TCK')
 
@@ -68,14 +68,28 @@ class NodeStats(object):
 
 
 class Probe(object):
-    """Counts camera frames; pairs each servo command with the frame before it."""
+    """Counts camera frames; pairs each servo command with the frame before it.
+    ``raw``: also subscribe to the raw image (sensor_msgs/Image), as a
+    cv_bridge user would."""
 
-    def __init__(self):
+    def __init__(self, raw=False):
         self.frames, self.last_frame_wall, self.latencies = 0, None, []
+        self.raw_frames = 0
         self.lock = threading.Lock()
-        rospy.Subscriber('/robot/camera1/image_raw/compressed', CompressedImage, self._on_image,
-                         queue_size=1, buff_size=2 ** 24)
-        rospy.Subscriber('/robot/cmd_vel', Twist, self._on_cmd, queue_size=50)
+        self.subs = [
+            rospy.Subscriber('/robot/camera1/image_raw/compressed', CompressedImage,
+                             self._on_image, queue_size=1, buff_size=2 ** 24),
+            rospy.Subscriber('/robot/cmd_vel', Twist, self._on_cmd, queue_size=50)]
+        if raw:
+            self.subs.append(rospy.Subscriber('/robot/camera1/image_raw', Image, self._on_raw,
+                                              queue_size=1, buff_size=2 ** 25))
+
+    def _on_raw(self, _msg):
+        self.raw_frames += 1
+
+    def close(self):
+        for sub in self.subs:
+            sub.unregister()
 
     def _on_image(self, _msg):
         with self.lock:
@@ -101,20 +115,23 @@ def measure(seconds, probe):
                 frames_per_wall_s=(probe.frames - f0) / wall)
 
 
-def run_system(args, seconds, log, node_names, warmup=5.0):
+def run_system(args, seconds, log, node_names, warmup=5.0, raw=False):
     launch = Launch(args, log)
+    probe = Probe(raw)
     try:
-        probe = Probe()
         time.sleep(warmup)
         stats = NodeStats(node_names)
         result = measure(seconds, probe)
         result['nodes'] = stats.report()
+        if raw:
+            result['raw_frames'] = probe.raw_frames
         lat = sorted(probe.latencies)
         if lat:
             result['latency_ms'] = dict(median=lat[len(lat) // 2],
                                         p95=lat[int(len(lat) * 0.95)], n=len(lat))
         return result
     finally:
+        probe.close()
         launch.stop()
         time.sleep(2)
 

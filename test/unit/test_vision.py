@@ -3,7 +3,7 @@ import cv2
 import numpy as np
 import pytest
 
-from exp_assignment2.vision import BallDetector, annotate, decode_jpeg, encode_jpeg
+from exp_assignment2.vision import BallDetector, annotate, decode_jpeg, encode_jpeg, vision_scale
 
 GREEN = (0, 204, 0)   # BGR of the ball's RGB (0, 0.8, 0)
 
@@ -72,3 +72,34 @@ def test_detection_survives_jpeg_and_annotation_draws():
     assert abs(ball.x - 200) <= 2 and abs(ball.y - 150) <= 2
     out = annotate(decoded.copy(), ball)
     assert (out != decoded).any()
+
+
+@pytest.mark.parametrize('centre,radius', [((400, 400), 200), ((130, 610), 60), ((700, 90), 25),
+                                           ((400, 430), 12), ((5, 400), 80)])
+def test_a_half_scale_decode_finds_the_same_ball_in_full_image_pixels(centre, radius):
+    """The state machine's cheap path at 800 px: decode at half size, detect, scale back."""
+    jpeg = encode_jpeg(scene(800, 800, ball=(centre[0], centre[1], radius)), 80)
+    full = BallDetector().detect(decode_jpeg(jpeg))
+    half_image = decode_jpeg(jpeg, 2)
+    assert half_image.shape == (400, 400, 3)
+    half = BallDetector().detect(half_image, scale=2)
+    assert half is not None and full is not None
+    # what the servo uses (centroid, radius) within 1.5 px (2 % of a large radius);
+    # the enclosing circle of a ball cut by the edge within 3 px
+    assert abs(half.cx - full.cx) <= 1.5 and abs(half.cy - full.cy) <= 1.5, (half, full)
+    assert abs(half.radius - full.radius) <= max(1.5, 0.02 * full.radius), (half, full)
+    assert abs(half.x - full.x) <= 3 and abs(half.y - full.y) <= 3, (half, full)
+
+
+def test_the_800_px_threshold_holds_at_half_scale():
+    """Radius 10 px at 800 px is the limit whatever the scale."""
+    for radius, seen in ((8, False), (14, True)):
+        jpeg = encode_jpeg(scene(800, 800, ball=(400, 200, radius)), 95)
+        assert (BallDetector().detect(decode_jpeg(jpeg, 2), scale=2) is not None) == seen
+        assert (BallDetector().detect(decode_jpeg(jpeg)) is not None) == seen
+
+
+def test_vision_scale_keeps_400_px_of_width_and_empty_data_is_no_image():
+    assert [vision_scale(w) for w in (320, 400, 799, 800, 1280, 1600, 3200)] == [
+        1, 1, 1, 2, 2, 4, 8]
+    assert decode_jpeg(b'') is None and decode_jpeg(b'not a jpeg') is None

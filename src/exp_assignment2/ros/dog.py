@@ -16,7 +16,7 @@ from std_msgs.msg import Float64
 
 from exp_assignment2.ros.frames import decode_frame
 from exp_assignment2.ros.robot_model import robot_name
-from exp_assignment2.vision import BallDetector, annotate, encode_jpeg
+from exp_assignment2.vision import BallDetector, annotate, encode_jpeg, vision_scale
 
 CAMERA_TOPIC = 'camera1/image_raw/compressed'      # in the robot's namespace
 OUTPUT_TOPIC = '/output/image_raw/compressed'
@@ -105,11 +105,21 @@ class RosDogEyes(object):
     def __init__(self, clock, min_radius_at_800=10.0, gui=False):
         self.clock = clock
         self.detector = BallDetector(min_radius_at_800)
+        self.scale = 1        # frames are decoded at 1/scale (vision_scale of their width)
+        self.frames = self.missed = 0       # frames seen, and gaps in their sequence
+        self.last_seq = None
         self.seen, self.servo = None, None
         self.window = ImageWindow() if gui else None
         self.output_pub = rospy.Publisher(OUTPUT_TOPIC, CompressedImage, queue_size=1)
-        rospy.Subscriber(robot_name(CAMERA_TOPIC), CompressedImage, self._on_image, queue_size=1,
-                         buff_size=2 ** 24)
+        # a few frames of slack: a burst is absorbed, not dropped
+        rospy.Subscriber(robot_name(CAMERA_TOPIC), CompressedImage, self._on_image, queue_size=3,
+                         buff_size=2 ** 25)
+        rospy.on_shutdown(self._report)
+
+    def _report(self):
+        if self.frames:
+            rospy.loginfo('camera: %d frames, %d missed (%.2f %%)', self.frames, self.missed,
+                          100.0 * self.missed / (self.frames + self.missed))
 
     def last_seen(self):
         return self.seen
@@ -118,18 +128,28 @@ class RosDogEyes(object):
         self.servo = servo
 
     def _on_image(self, msg):
-        bgr = decode_frame(msg, 'camera')
+        seq = msg.header.seq
+        if self.last_seq is not None and self.last_seq < seq:
+            self.missed += seq - self.last_seq - 1
+        self.last_seq, self.frames = seq, self.frames + 1
+        scale = self.scale
+        bgr = decode_frame(msg, 'camera', scale)
         if bgr is None:
             return
-        ball = self.detector.detect(bgr)
+        width = bgr.shape[1] * scale
+        if vision_scale(width) != scale:      # the first frame, or a new camera size
+            self.scale = vision_scale(width)
+        ball = self.detector.detect(bgr, scale)
         if ball is not None:
             self.seen = msg.header.stamp.to_sec()
         servo = self.servo
         if servo is not None:
-            servo(ball, bgr.shape[1])
+            servo(ball, width)
         self.clock.notify()
         wanted = self.output_pub.get_num_connections() > 0
         if wanted or self.window is not None:
+            if scale != 1:                     # the view is drawn at full size
+                bgr = decode_frame(msg, 'camera')
             annotate(bgr, ball)
             if self.window is not None:
                 self.window.show(bgr)

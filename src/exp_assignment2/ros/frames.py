@@ -4,10 +4,11 @@ import rospy
 from exp_assignment2.vision import decode_jpeg
 
 
-def decode_frame(msg, who):
-    """The BGR image of a JPEG ``CompressedImage``; None, with a warning
-    naming ``who`` (at most one every 10 s), when it is not one."""
-    bgr = decode_jpeg(msg.data)
+def decode_frame(msg, who, scale=1):
+    """The BGR image of a JPEG ``CompressedImage`` (at 1/``scale`` of its
+    size); None, with a warning naming ``who`` (at most one every 10 s), when
+    it is not one."""
+    bgr = decode_jpeg(msg.data, scale)
     if bgr is None:
         rospy.logwarn_throttle(10.0, '%s: a frame that is not a JPEG image' % who)
     return bgr
