@@ -12,7 +12,7 @@ import tf2_ros
 from gazebo_msgs.msg import LinkState
 from geometry_msgs.msg import Twist
 from rosgraph_msgs.msg import Log
-from sensor_msgs.msg import CameraInfo, CompressedImage, JointState
+from sensor_msgs.msg import CameraInfo, CompressedImage, Image, JointState
 from std_msgs.msg import Float64
 from std_srvs.srv import Empty
 from visualization_msgs.msg import MarkerArray
@@ -107,6 +107,18 @@ class TestSimulator(unittest.TestCase):
         self.assertEqual(sorted(round(abs(m.pose.position.x) + abs(m.pose.position.y), 1)
                                 for m in walls), [9.4] * 4)
         self.assertTrue(all(m.header.frame_id == 'odom' for m in markers.markers[1:]))
+
+    def test_the_raw_image_is_rgb8_with_the_stamp_and_frame_of_the_jpeg(self):
+        raw = Watch('/robot/camera1/image_raw', Image, keep=True)
+        jpegs = Watch('/robot/camera1/image_raw/compressed', CompressedImage, keep=True)
+        self.assertTrue(wait_until(lambda: len(raw.all) >= 5, 10.0))
+        image = raw.all[-1]
+        self.assertEqual((image.width, image.height, image.encoding, image.step),
+                         (800, 800, 'rgb8', 2400))
+        stamps = {(m.header.stamp, m.header.frame_id) for m in jpegs.all}
+        matched = [m for m in raw.all if (m.header.stamp, m.header.frame_id) in stamps]
+        self.assertGreaterEqual(len(matched), 3)
+        self.assertEqual(image.header.frame_id, 'camera_link')
 
     def test_camera_info_is_an_800_px_pinhole_with_80_degrees(self):
         info = self.info.next()

@@ -18,7 +18,7 @@ WS="${EXP2_WS:-$HOME/.cache/exp_assignment2_ws}"
 # ROS runs on Debian's python3, whatever python3 comes first on PATH.
 export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"
 
-APT_PACKAGES=(python3-tf python3-scipy python3-opencv python3-numpy python3-pip)
+APT_PACKAGES=(python3-tf python3-scipy python3-opencv python3-numpy python3-pip python3-cv-bridge)
 IMUTILS_VERSION=0.5.4
 
 log() { printf '[original-env] %s\n' "$*" >&2; }
