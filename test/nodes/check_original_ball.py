@@ -98,7 +98,11 @@ class TestOriginalBall(unittest.TestCase):
         state = self.client.get_state()
         self.assertEqual(state, GoalStatus.SUCCEEDED, 'z = %g: the goal ended %s (%s)' % (
             z, STATES.get(state, state), self.client.get_goal_status_text()))
-        done = rospy.get_time()
+        # the world shows the height once the ball's odometry does (a server that
+        # sets it on the set_link_state topic may finish before that message lands)
+        self.assertTrue(wait_until(lambda: abs(self.ball.msg.pose.pose.position.z - z) < 1e-3,
+                                   5.0), 'z = %g: the ball never got there' % z)
+        done = self.ball.msg.header.stamp.to_sec()
         seen = [original_detection(f.data) for f in self.frames.collect(done, FRAMES)]
         print('[check_original_ball] z = %g: ball at %s; %d of %d frames see it%s'
               % (z, tuple(round(v, 2) for v in self.ball.xyzyaw()[:3]),
