@@ -79,8 +79,11 @@ class Simulator(object):
                 raise ValueError('model %s: no URDF in parameter %s' % (spec.name,
                                                                          spec.description))
             return text
+        # original-env --package gives the name exp_assignment2 to the user's
+        # package; this one is then EXP2_SIM_PACKAGE (tools/original_env/overlay)
+        package = os.environ.get('EXP2_SIM_PACKAGE') or 'exp_assignment2'
         urdf_dir = self.params['urdf_dir'] or os.path.join(
-            rospkg.RosPack().get_path('exp_assignment2'), 'urdf')
+            rospkg.RosPack().get_path(package), 'urdf')
         path = spec.urdf if os.path.isabs(spec.urdf) else os.path.join(urdf_dir, spec.urdf)
         if not os.path.exists(path):
             raise ValueError('model %s: no URDF at %s' % (spec.name, path))
