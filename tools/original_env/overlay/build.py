@@ -29,19 +29,12 @@ REPO = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
 sys.path.insert(0, HERE)
 
 import build_errors  # noqa: E402
+import debian_packages  # noqa: E402
 import python_package  # noqa: E402
 import sim_package  # noqa: E402
 import source_tree  # noqa: E402
 import stand_ins  # noqa: E402
 
-# What a package made from the course template builds with: its
-# find_package(catkin COMPONENTS cv_bridge image_transport roscpp tf
-# actionlib_msgs message_generation ...), find_package(OpenCV) and C++ nodes.
-DEBIAN_PACKAGES = (
-    'g++', 'make', 'libroscpp-dev', 'libactionlib-dev', 'libactionlib-msgs-dev',
-    'libcv-bridge-dev', 'libimage-transport-dev', 'libtf-dev', 'libopencv-dev',
-    'libstd-msgs-dev', 'libgeometry-msgs-dev', 'libsensor-msgs-dev', 'libnav-msgs-dev',
-)
 OWN_PACKAGE = 'exp_assignment2'
 LOCK_TIMEOUT = 3600     # s: another shell building the same overlay
 BUILD_TIMEOUT = 3600
@@ -53,37 +46,6 @@ class BuildFailed(Exception):
 
 def log(message):
     print('[original-env] ' + message, file=sys.stderr, flush=True)
-
-
-def as_root(cmd):
-    return cmd if os.geteuid() == 0 else ['sudo'] + cmd
-
-
-def missing_debian(packages):
-    out = subprocess.run(['dpkg-query', '-W', '-f=${Package} ${Status}\\n'] + list(packages),
-                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
-                         universal_newlines=True).stdout
-    installed = {line.split()[0] for line in out.splitlines() if line.endswith(' installed')}
-    return [p for p in packages if p not in installed]
-
-
-def install_debian(packages):
-    missing = missing_debian(packages)
-    if not missing:
-        return
-    log('installing Debian packages: ' + ' '.join(missing))
-    env = dict(os.environ, DEBIAN_FRONTEND='noninteractive')
-    subprocess.run(as_root(['apt-get', 'update', '-qq']), env=env, check=True)
-    subprocess.run(as_root(['apt-get', 'install', '-y', '-qq', '--no-install-recommends']
-                           + missing), env=env, check=True, stdout=subprocess.DEVNULL)
-
-
-def debian_candidate(component):
-    """Debian's development package for a catkin package, if apt knows one."""
-    name = 'lib%s-dev' % component.replace('_', '-').lower()
-    proc = subprocess.run(['apt-cache', 'show', '--no-all-versions', name],
-                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    return name if proc.returncode == 0 else None
 
 
 def file_hash(paths):
@@ -151,7 +113,7 @@ class Overlay:
             for space in ('build', 'devel', 'src'):
                 shutil.rmtree(os.path.join(self.path, space), ignore_errors=True)
         source_tree.link_farm(self.package_dir, self.farm)
-        install_debian(DEBIAN_PACKAGES)
+        debian_packages.install(debian_packages.TEMPLATE_BUILD)
         prefix = self.give_stand_ins()
         log('building %s in %s (full log: %s)' % (self.package_dir, self.path, self.log_path))
         env = dict(os.environ, CMAKE_PREFIX_PATH=os.pathsep.join(
@@ -179,9 +141,9 @@ class Overlay:
         names = stand_ins.components_of_tree(self.farm)
         probe = os.path.join(self.path, 'probe')
         missing = stand_ins.missing_components(names, probe, os.environ)
-        candidates = [c for c in (debian_candidate(n) for n in missing or ()) if c]
+        candidates = [c for c in (debian_packages.candidate(n) for n in missing or ()) if c]
         if candidates:
-            install_debian(candidates)
+            debian_packages.install(candidates)
             missing = stand_ins.missing_components(missing, probe, os.environ)
         if missing:
             log('stand-ins (Debian has none; found by CMake, provide nothing): '
@@ -291,8 +253,11 @@ def main(argv):
                 log('overlay %s is up to date with %s' % (overlay.path, package_dir))
             else:
                 overlay.build(names, stamp)
-    except BuildFailed as e:
+    except (BuildFailed, debian_packages.InstallFailed) as e:
         log('the build of %s failed: %s' % (package_dir, e))
+        return 1
+    except subprocess.TimeoutExpired as e:
+        log('the build of %s failed: %s took more than %d s' % (package_dir, e.cmd[0], e.timeout))
         return 1
     log('package %s from %s; this repository\'s package: %s'
         % (', '.join(names), package_dir, sim_package.NAME))

@@ -30,8 +30,8 @@ __path__ = {path!r}
 for __init_file in {inits!r}:
     with open(__init_file) as __f:
         exec(compile(__f.read(), __init_file, 'exec'))
-globals().pop('__init_file', None)
-globals().pop('__f', None)
+for __name in ('__init_file', '__f', '__name'):
+    globals().pop(__name, None)
 '''
 
 KIND_INIT = '''"""exp_assignment2.{kind}: the user's types, then this repository's that the user lacks.
@@ -40,11 +40,11 @@ Written by tools/original_env/overlay/python_package.py; see there.
 """
 # A submodule (_Planning.py, ...) is looked up in this order: the user's first.
 __path__ = {path!r}
-for __init_file in reversed(__path__):
-    with open(__init_file + '/__init__.py') as __f:
-        exec(compile(__f.read(), __init_file + '/__init__.py', 'exec'))
-globals().pop('__init_file', None)
-globals().pop('__f', None)
+for __init_file in [__d + '/__init__.py' for __d in reversed(__path__)]:
+    with open(__init_file) as __f:
+        exec(compile(__f.read(), __init_file, 'exec'))
+for __name in ('__init_file', '__f', '__d', '__name'):
+    globals().pop(__name, None)
 '''
 
 

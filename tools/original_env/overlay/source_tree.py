@@ -8,6 +8,7 @@ says when to rebuild, reads.
 """
 import hashlib
 import os
+import shutil
 
 # Top-level entries a catkin build or a checkout leaves in a package directory.
 SKIPPED_AT_TOP = frozenset(('build', 'devel', 'install', 'logs', '.catkin_tools',
@@ -70,7 +71,11 @@ def link_farm(directory, farm):
         os.unlink(farm)
     elif os.path.isdir(farm):
         for name in os.listdir(farm):
-            os.unlink(os.path.join(farm, name))
+            path = os.path.join(farm, name)
+            if os.path.isdir(path) and not os.path.islink(path):
+                shutil.rmtree(path)
+            else:
+                os.unlink(path)
     os.makedirs(farm, exist_ok=True)
     for name in counted_entries(directory):
         os.symlink(os.path.join(directory, name), os.path.join(farm, name))
