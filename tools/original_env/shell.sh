@@ -4,6 +4,10 @@
 # process's environment changes).
 #   bash tools/original_env/shell.sh                 interactive shell
 #   bash tools/original_env/shell.sh CMD [ARGS...]   run CMD in it
+#   bash tools/original_env/shell.sh --package DIR [CMD...]
+#       with the user's own package DIR built in an overlay workspace
+#       (overlay/build.py): exp_assignment2 is then theirs, this one is
+#       exp_assignment2_sim
 # It installs what the original imports and Debian can give (tf, scipy;
 # imutils from PyPI), sources the catkin workspace, and sets PYTHONPATH so
 # that cv2's HighGUI runs on one thread (the original calls cv2.imshow from
@@ -23,6 +27,13 @@ IMUTILS_VERSION=0.5.4
 
 log() { printf '[original-env] %s\n' "$*" >&2; }
 as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
+
+PACKAGE_DIR=
+case "${1:-}" in
+  --package) [ $# -ge 2 ] || { log "--package needs the directory of your package"; exit 2; }
+             PACKAGE_DIR=$2; shift 2 ;;
+  --package=*) PACKAGE_DIR=${1#--package=}; shift ;;
+esac
 
 # Installs are skipped when present, so this is cheap after the first run.
 missing=()
@@ -49,6 +60,11 @@ set +u
 source "$WS/devel/setup.bash"
 export ROS_HOME="${ROS_HOME:-$WS/ros_home}"
 
+if [ -n "$PACKAGE_DIR" ]; then
+  overlay_env=$(/usr/bin/python3 "$HERE/overlay/build.py" --workspace "$WS" "$PACKAGE_DIR") || exit 1
+  eval "$overlay_env"
+fi
+
 # The original's scripts start with "#!/usr/bin/env python": Debian has no
 # "python", and another one later on PATH could not import Debian's rospy.
 # python_launcher.sh is /usr/bin/python3 that also starts a script mixing tabs
@@ -73,4 +89,5 @@ fi
 # ~/.bashrc may put another python3 (pyenv) first again: restore ours after it.
 exec bash --rcfile <(printf '%s\n' '[ -f ~/.bashrc ] && . ~/.bashrc' \
   "export PATH=$(printf %q "$PATH") PYTHONPATH=$(printf %q "$PYTHONPATH")" \
+  "export ROS_PACKAGE_PATH=$(printf %q "$ROS_PACKAGE_PATH")" \
   'PS1="(original-env) $PS1"') -i

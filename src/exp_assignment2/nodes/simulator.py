@@ -81,8 +81,11 @@ class SimulatorNode(object):
                       ', paused' if self.engine.paused else '')
 
     def _urdf_dir(self):
-        return self.params['urdf_dir'] or os.path.join(
-            rospkg.RosPack().get_path('exp_assignment2'), 'urdf')
+        # with original-env --package, exp_assignment2 is the user's package:
+        # this one is EXP2_SIM_PACKAGE then
+        package = os.environ.get('EXP2_SIM_PACKAGE') or 'exp_assignment2'
+        return self.params['urdf_dir'] or os.path.join(rospkg.RosPack().get_path(package),
+                                                       'urdf')
 
     def _urdf_text(self, spec):
         if spec.description:

@@ -1,0 +1,269 @@
+#!/usr/bin/env python3
+"""Build the user's package in an overlay workspace: original-env --package DIR.
+
+    build.py --workspace WS DIR      (run by shell.sh with WS sourced)
+
+prints shell code that puts the overlay in the environment (shell.sh evals
+it) and logs to stderr. The overlay is a catkin workspace chained on WS, in
+``$EXP2_OVERLAY_ROOT`` (default ``WS/overlays``), one per directory: its
+source space links to DIR's files (DIR is only read), its build and devel
+spaces are its own. It is rebuilt only when DIR's content (source_tree), the
+main workspace or this tool changed. On the way it installs the Debian
+development packages a package made from the course template needs, and
+gives a stand-in to every catkin component its CMakeLists.txt names that
+neither Debian nor the workspaces have (stand_ins). A failed build prints
+one line naming the user's file (build_errors) and exits 1.
+"""
+import argparse
+import fcntl
+import hashlib
+import os
+import shlex
+import shutil
+import signal
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
+sys.path.insert(0, HERE)
+
+import build_errors  # noqa: E402
+import debian_packages  # noqa: E402
+import python_package  # noqa: E402
+import sim_package  # noqa: E402
+import source_tree  # noqa: E402
+import stand_ins  # noqa: E402
+
+OWN_PACKAGE = 'exp_assignment2'
+LOCK_TIMEOUT = 3600     # s: another shell building the same overlay
+BUILD_TIMEOUT = 3600
+
+
+class BuildFailed(Exception):
+    """The one line to print, the build having failed."""
+
+
+def log(message):
+    print('[original-env] ' + message, file=sys.stderr, flush=True)
+
+
+def file_hash(paths):
+    digest = hashlib.sha1()
+    for path in sorted(paths):
+        with open(path, 'rb') as f:
+            digest.update(path.encode() + b'\0' + f.read())
+    return digest.hexdigest()
+
+
+def overlay_dir(root, package_dir):
+    key = hashlib.sha1(package_dir.encode('utf-8', 'surrogateescape')).hexdigest()[:10]
+    return os.path.join(root, '%s-%s' % (os.path.basename(package_dir) or 'package', key))
+
+
+def package_names(package_dir):
+    """Names of the catkin packages in ``package_dir``; BuildFailed naming a bad package.xml."""
+    from catkin_pkg.package import InvalidPackage, parse_package
+    from catkin_pkg.packages import find_package_paths
+    skipped = [os.path.join(package_dir, d) for d in source_tree.SKIPPED_AT_TOP]
+    names = []
+    for rel in find_package_paths(package_dir, exclude_paths=skipped):
+        path = os.path.normpath(os.path.join(package_dir, rel))
+        try:
+            names.append(parse_package(path).name)
+        except InvalidPackage as e:
+            message = str(e).split("':", 1)[-1] if str(e).startswith('Error(s) in') else str(e)
+            raise BuildFailed('%s: %s' % (os.path.join(path, 'package.xml'),
+                                          build_errors.one_line(message)))
+    if not names:
+        raise BuildFailed('%s has no package.xml: give the directory of a catkin package'
+                          % package_dir)
+    return sorted(names)
+
+
+class Overlay:
+    """The overlay workspace of one user package directory."""
+
+    def __init__(self, package_dir, workspace, root):
+        self.package_dir = package_dir
+        self.workspace = workspace
+        self.path = overlay_dir(root, package_dir)
+        self.farm = os.path.join(self.path, 'src', os.path.basename(package_dir) or 'package')
+        self.log_path = os.path.join(self.path, 'build.log')
+        self.stamp_path = os.path.join(self.path, '.stamp')
+        self.names_path = os.path.join(self.path, '.packages')
+
+    def stamp(self, names):
+        own = [os.path.join(HERE, f) for f in os.listdir(HERE) if f.endswith('.py')]
+        launch = [os.path.join(r, f) for r, _d, fs in os.walk(os.path.join(REPO, 'launch'))
+                  for f in fs]
+        parts = [self.package_dir, ' '.join(names), source_tree.content_hash(self.package_dir),
+                 _read(os.path.join(self.workspace, '.build_stamp')), file_hash(own + launch),
+                 ' '.join(sorted(os.listdir(REPO)))]
+        return hashlib.sha1('\n'.join(parts).encode('utf-8', 'surrogateescape')).hexdigest()
+
+    def up_to_date(self, stamp):
+        return (_read(self.stamp_path) == stamp
+                and os.path.exists(os.path.join(self.path, 'devel', 'setup.bash')))
+
+    def build(self, names, stamp):
+        if os.path.exists(self.stamp_path):
+            os.unlink(self.stamp_path)
+        if _read(self.names_path) != ' '.join(names):   # other packages: start afresh
+            for space in ('build', 'devel', 'src'):
+                shutil.rmtree(os.path.join(self.path, space), ignore_errors=True)
+        source_tree.link_farm(self.package_dir, self.farm)
+        debian_packages.install(debian_packages.TEMPLATE_BUILD)
+        prefix = self.give_stand_ins()
+        log('building %s in %s (full log: %s)' % (self.package_dir, self.path, self.log_path))
+        env = dict(os.environ, CMAKE_PREFIX_PATH=os.pathsep.join(
+            p for p in (prefix, os.environ.get('CMAKE_PREFIX_PATH')) if p))
+        with open(self.log_path, 'w') as out:
+            # --force-cmake: genmsg's dependency checks want a new configure
+            # when a message changed, and the overlay builds only after changes
+            proc = subprocess.run(['catkin_make', '-C', self.path, '--force-cmake',
+                                   '-DPYTHON_EXECUTABLE=/usr/bin/python3',
+                                   '-DCATKIN_ENABLE_TESTING=OFF'],
+                                  stdout=out, stderr=subprocess.STDOUT, env=env,
+                                  timeout=BUILD_TIMEOUT)
+        if proc.returncode != 0:
+            raise BuildFailed(self.failure())
+        self.write_own_package(names)
+        with open(self.names_path, 'w') as f:
+            f.write(' '.join(names))
+        with open(self.stamp_path, 'w') as f:
+            f.write(stamp)
+
+    def give_stand_ins(self):
+        """Install Debian's packages for missing components, stand-ins for the rest."""
+        prefix = os.path.join(self.path, 'stand_ins')
+        shutil.rmtree(prefix, ignore_errors=True)
+        names = stand_ins.components_of_tree(self.farm)
+        probe = os.path.join(self.path, 'probe')
+        missing = stand_ins.missing_components(names, probe, os.environ)
+        candidates = [c for c in (debian_packages.candidate(n) for n in missing or ()) if c]
+        if candidates:
+            debian_packages.install(candidates)
+            missing = stand_ins.missing_components(missing, probe, os.environ)
+        if missing:
+            log('stand-ins (Debian has none; found by CMake, provide nothing): '
+                + ' '.join(missing))
+            stand_ins.write_stand_ins(missing, prefix)
+        return prefix
+
+    def failure(self):
+        with open(self.log_path, errors='replace') as f:
+            found = build_errors.first_error(f.read(), self.to_user,
+                                             os.path.join(self.path, 'src'))
+        where, message = found or (None, 'catkin_make failed')
+        return '%s%s (full log: %s)' % (where + ': ' if where else '', message, self.log_path)
+
+    def to_user(self, path):
+        """The user's path of a path in the overlay's source space, else None."""
+        for farm in (self.farm, os.path.realpath(self.farm)):
+            if path == farm or path.startswith(farm + '/'):
+                return self.package_dir + path[len(farm):]
+        if path == self.package_dir or path.startswith(self.package_dir + '/'):
+            return path
+        return None
+
+    def write_own_package(self, names):
+        """This repository's package as exp_assignment2_sim; one Python exp_assignment2."""
+        sim_package.write_package(REPO, os.path.join(self.path, 'packages', sim_package.NAME))
+        merged = os.path.join(self.path, 'python', OWN_PACKAGE)
+        shutil.rmtree(os.path.dirname(merged), ignore_errors=True)
+        if OWN_PACKAGE in names:
+            python_package.write_merged(merged, self.devel_python(self.path),
+                                        self.devel_python(self.workspace))
+
+    @staticmethod
+    def devel_python(workspace):
+        return os.path.join(workspace, 'devel', 'lib', 'python3', 'dist-packages', OWN_PACKAGE)
+
+    def shell_code(self, names):
+        """What shell.sh evals: the overlay's setup, then the merged package first."""
+        q = shlex.quote
+        lines = ['source %s' % q(os.path.join(self.path, 'devel', 'setup.bash'))]
+        if OWN_PACKAGE in names:
+            lines.append('export PYTHONPATH=%s${PYTHONPATH:+:$PYTHONPATH}'
+                         % q(os.path.join(self.path, 'python')))
+        lines.append('export ROS_PACKAGE_PATH=${ROS_PACKAGE_PATH:+$ROS_PACKAGE_PATH:}%s'
+                     % q(os.path.join(self.path, 'packages')))
+        lines.append('export EXP2_SIM_PACKAGE=%s EXP2_OVERLAY=%s' % (sim_package.NAME,
+                                                                  q(self.path)))
+        return '\n'.join(lines)
+
+
+def _read(path):
+    try:
+        with open(path) as f:
+            return f.read().strip()
+    except OSError:
+        return None
+
+
+class _Locked:
+    """An exclusive lock on the overlay, waited for at most LOCK_TIMEOUT s."""
+
+    def __init__(self, path):
+        self.path = path
+
+    def __enter__(self):
+        os.makedirs(os.path.dirname(self.path), exist_ok=True)
+        self.file = open(self.path, 'w')
+        try:
+            fcntl.flock(self.file, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            log('waiting for another build of this overlay (at most %d s)' % LOCK_TIMEOUT)
+            signal.signal(signal.SIGALRM, _timed_out)
+            signal.alarm(LOCK_TIMEOUT)
+            fcntl.flock(self.file, fcntl.LOCK_EX)
+            signal.alarm(0)
+        return self
+
+    def __exit__(self, *exc):
+        self.file.close()
+
+
+def _timed_out(_signum, _frame):
+    raise BuildFailed('another build of this overlay held it for %d s' % LOCK_TIMEOUT)
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    parser.add_argument('--workspace', required=True, help='the sourced catkin workspace')
+    parser.add_argument('package_dir')
+    args = parser.parse_args(argv)
+    package_dir = os.path.realpath(args.package_dir)
+    if not os.path.isdir(package_dir):
+        log('--package %s: no such directory' % args.package_dir)
+        return 1
+    workspace = os.path.realpath(args.workspace)
+    root = os.environ.get('EXP2_OVERLAY_ROOT') or os.path.join(workspace, 'overlays')
+    try:
+        names = package_names(package_dir)
+        overlay = Overlay(package_dir, workspace, os.path.realpath(root))
+        for outside in (package_dir, REPO):
+            if overlay.path == outside or overlay.path.startswith(outside + '/'):
+                raise BuildFailed('the overlay %s would be inside %s: set EXP2_OVERLAY_ROOT'
+                                  ' to a directory outside it' % (overlay.path, outside))
+        with _Locked(os.path.join(overlay.path, '.lock')):
+            stamp = overlay.stamp(names)
+            if overlay.up_to_date(stamp):
+                log('overlay %s is up to date with %s' % (overlay.path, package_dir))
+            else:
+                overlay.build(names, stamp)
+    except (BuildFailed, debian_packages.InstallFailed) as e:
+        log('the build of %s failed: %s' % (package_dir, e))
+        return 1
+    except subprocess.TimeoutExpired as e:
+        log('the build of %s failed: %s took more than %d s' % (package_dir, e.cmd[0], e.timeout))
+        return 1
+    log('package %s from %s; this repository\'s package: %s'
+        % (', '.join(names), package_dir, sim_package.NAME))
+    print(overlay.shell_code(names))
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,54 @@
+"""Debian's development packages the overlay builds with, installed when missing.
+
+A package made from the course template names cv_bridge, image_transport,
+roscpp, tf, actionlib_msgs and message_generation in its
+find_package(catkin ...), OpenCV in another find_package, and may have C++
+nodes (roscpp, actionlib clients): Debian has all of them, so they are the
+real ones, not stand-ins.
+"""
+import os
+import subprocess
+import sys
+
+TEMPLATE_BUILD = (
+    'g++', 'make', 'libroscpp-dev', 'libactionlib-dev', 'libactionlib-msgs-dev',
+    'libcv-bridge-dev', 'libimage-transport-dev', 'libtf-dev', 'libopencv-dev',
+    'libstd-msgs-dev', 'libgeometry-msgs-dev', 'libsensor-msgs-dev', 'libnav-msgs-dev',
+)
+
+
+class InstallFailed(Exception):
+    """apt-get could not install what the build needs."""
+
+
+def missing(packages):
+    """The packages of ``packages`` that are not installed."""
+    out = subprocess.run(['dpkg-query', '-W', '-f=${Package} ${Status}\\n'] + list(packages),
+                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                         universal_newlines=True).stdout
+    installed = {line.split()[0] for line in out.splitlines() if line.endswith(' installed')}
+    return [p for p in packages if p not in installed]
+
+
+def install(packages):
+    """Install those of ``packages`` that are missing (as root, else through sudo)."""
+    needed = missing(packages)
+    if not needed:
+        return
+    print('[original-env] installing Debian packages: ' + ' '.join(needed), file=sys.stderr,
+          flush=True)
+    sudo = [] if os.geteuid() == 0 else ['sudo']
+    env = dict(os.environ, DEBIAN_FRONTEND='noninteractive')
+    for cmd in (['apt-get', 'update', '-qq'],
+                ['apt-get', 'install', '-y', '-qq', '--no-install-recommends'] + needed):
+        proc = subprocess.run(sudo + cmd, env=env, stdout=subprocess.DEVNULL)
+        if proc.returncode != 0:
+            raise InstallFailed('%s exited with %d' % (' '.join(cmd[:2]), proc.returncode))
+
+
+def candidate(component):
+    """Debian's development package for a catkin package (``lib<name>-dev``), if apt knows it."""
+    name = 'lib%s-dev' % component.replace('_', '-').lower()
+    proc = subprocess.run(['apt-cache', 'show', '--no-all-versions', name],
+                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return name if proc.returncode == 0 else None
