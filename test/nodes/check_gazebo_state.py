@@ -10,6 +10,7 @@ from gazebo_msgs.msg import LinkStates, ModelState, ModelStates
 from gazebo_msgs.srv import (GetLinkState, GetModelState, GetWorldProperties, SetLinkState,
                              SetModelState)
 from gazebo_msgs.msg import LinkState
+from nav_msgs.msg import Odometry
 from rosgraph_msgs.msg import Log
 from std_srvs.srv import Empty
 
@@ -92,10 +93,15 @@ class TestGazeboState(unittest.TestCase):
     def test_5_reset_simulation_sets_time_and_world_back(self):
         clock().sleep(1.0)
         self.assertGreater(rospy.get_time(), 2.0)
+        odom = Watch('/ball/odom', Odometry, keep=True)
+        odom.next(5.0)
         self.srv['reset_simulation']()
-        self.assertTrue(wait_until(lambda: self.ball.msg.header.stamp.to_sec() < 1.0
-                                   and abs(self.ball.msg.pose.pose.position.x + 7.0) < 1e-3,
-                                   5.0), self.ball.msg.header.stamp.to_sec())
+
+        def back_at_zero():       # a message of the reset world, stamped near 0
+            return [m for m in odom.all if m.header.stamp.to_sec() < 1.0
+                    and abs(m.pose.pose.position.x + 7.0) < 1e-3]
+        self.assertTrue(wait_until(back_at_zero, 5.0),
+                        [m.header.stamp.to_sec() for m in odom.all[-3:]])
         robot = self.srv['get_model_state']('robot', '')
         self.assertLess(math.hypot(robot.pose.position.x + 5.0, robot.pose.position.y - 7.0),
                         0.05)
