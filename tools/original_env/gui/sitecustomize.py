@@ -48,5 +48,5 @@ if os.environ.get('EXP2_TAB_RULE', '1') != '0':
     exp2_tab_import.install()
     exp2_tab_import.install_for_catkin_relay(sys.modules['__main__'], getattr(sys, 'argv', []))
 if os.environ.get('EXP2_CV2_GUI_THREAD', '1') != '0' and _display_configured():
-    import exp2_cv2_gui
-    exp2_cv2_gui.install()
+    import exp2_cv2_import
+    exp2_cv2_import.install()
