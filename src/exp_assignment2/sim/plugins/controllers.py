@@ -7,12 +7,12 @@ from controller_manager_msgs.srv import (ListControllers, ListControllersRespons
                                          SwitchController, SwitchControllerResponse,
                                          UnloadController, UnloadControllerResponse)
 from sensor_msgs.msg import JointState
-from std_msgs.msg import Float64, Header
+from std_msgs.msg import Float64
 
 from exp_assignment2.refusal import RefusalLog
 from exp_assignment2.sim.drives import JointPosition
 from exp_assignment2.sim.plugins.cores import Every
-from exp_assignment2.sim.plugins.ros_io import stamp
+from exp_assignment2.sim.plugins.ros_io import publish_joint_states
 
 HEAD_SPEED, HEAD_EFFORT = 2.0, 5.0     # rad/s and N m a position controller uses at most
 
@@ -37,9 +37,7 @@ class JointStateController(object):
 
     def publish(self):
         if self.every.due():
-            names, pos, vel, eff = self.model.joint_states()
-            self.pub.publish(JointState(header=Header(stamp=stamp(self.engine)), name=names,
-                                        position=pos, velocity=vel, effort=eff))
+            publish_joint_states(self.pub, self.model, self.engine)
 
     def reset(self):
         self.every.reset()
@@ -61,6 +59,9 @@ class JointCommandController(object):
                              % (name, joint, self.model.name,
                                 ', '.join(self.model.movable_joints) or 'none'))
         self.joints = [joint]
+        # position_controllers/... drives a PositionJointInterface, and so on
+        self.hardware = 'hardware_interface/%sJointInterface' % (
+            config['type'].split('_')[0].capitalize())
         self.topic = '%s/%s/command' % (manager.ns, name)
         self.ignored = RefusalLog(self.topic, rospy.logwarn, period=5.0, what='ignored')
         self.clamped = RefusalLog(self.topic, rospy.logwarn, period=5.0, what='clamped')
@@ -91,8 +92,6 @@ class PositionController(JointCommandController):
 
     def __init__(self, manager, name, config):
         JointCommandController.__init__(self, manager, name, config)
-        self.hardware = 'hardware_interface/%sJointInterface' % (
-            config['type'].split('_')[0].capitalize())
         self.drive = JointPosition(self.model, self.joints[0], HEAD_SPEED, HEAD_EFFORT)
         self.command = self.drive.command
 
@@ -108,8 +107,6 @@ class VelocityController(JointCommandController):
 
     def __init__(self, manager, name, config):
         JointCommandController.__init__(self, manager, name, config)
-        self.hardware = 'hardware_interface/%sJointInterface' % (
-            config['type'].split('_')[0].capitalize())
         joint = self.model.urdf.joints[self.joints[0]]
         self.limit, self.effort = min(joint.velocity, 100.0), min(joint.effort, 100.0)
         self.velocity = 0.0

@@ -3,11 +3,10 @@ joints named in ``jointName`` (comma-separated; every movable joint when
 absent) at ``updateRate`` Hz of simulated time."""
 import rospy
 from sensor_msgs.msg import JointState
-from std_msgs.msg import Header
 
 from exp_assignment2.sim.plugins.base import Plugin, PluginError
 from exp_assignment2.sim.plugins.cores import Every
-from exp_assignment2.sim.plugins.ros_io import stamp
+from exp_assignment2.sim.plugins.ros_io import publish_joint_states
 
 
 class JointStatePublisherPlugin(Plugin):
@@ -28,9 +27,7 @@ class JointStatePublisherPlugin(Plugin):
 
     def after_step(self):
         if self.every.due():
-            names, pos, vel, eff = self.model.joint_states(self.joints)
-            self.pub.publish(JointState(header=Header(stamp=stamp(self.engine)), name=names,
-                                        position=pos, velocity=vel, effort=eff))
+            publish_joint_states(self.pub, self.model, self.engine, self.joints)
 
     def reset(self):
         self.every.reset()

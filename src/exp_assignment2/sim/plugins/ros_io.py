@@ -3,6 +3,8 @@ topic, odometry with its TF (as Gazebo's drive plugins publish it)."""
 import rospy
 from geometry_msgs.msg import TransformStamped, Twist
 from nav_msgs.msg import Odometry
+from sensor_msgs.msg import JointState
+from std_msgs.msg import Header
 from tf2_msgs.msg import TFMessage
 
 from exp_assignment2.refusal import RefusalLog
@@ -99,3 +101,10 @@ class OdometryPublisher(object):
         self.pub.unregister()
         if self.tf_pub is not None:
             self.tf_pub.unregister()
+
+
+def publish_joint_states(pub, model, engine, names=None):
+    """``sensor_msgs/JointState`` of ``names`` (every movable joint by default) now."""
+    names, positions, velocities, efforts = model.joint_states(names)
+    pub.publish(JointState(header=Header(stamp=stamp(engine)), name=names, position=positions,
+                           velocity=velocities, effort=efforts))
