@@ -31,6 +31,7 @@ class TestControllers(unittest.TestCase):
         rospy.init_node('check_controllers')
         clock()
         cls.rosout = Rosout()
+        cls.rosout.connected('/gazebo')   # its warnings must reach us
         cls.joints = Watch('/robot/joint_states', JointState, keep=True)
         cls.joints.next(30.0)
         for name, config in USER_YAML.items():          # what rosparam load does

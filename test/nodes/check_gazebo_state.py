@@ -32,6 +32,7 @@ class TestGazeboState(unittest.TestCase):
             rospy.wait_for_service('/gazebo/' + name, 30.0)
             cls.srv[name] = rospy.ServiceProxy('/gazebo/' + name, kind)
         cls.rosout = Rosout()
+        cls.rosout.connected('/gazebo')   # its refusals must reach us
         cls.ball = Pose('/ball/odom')
         cls.ball.next(20.0)
 

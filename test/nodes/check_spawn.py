@@ -44,6 +44,7 @@ class TestSpawn(unittest.TestCase):
         with open(os.path.join(FIXTURES, 'spawned_robot.urdf')) as f:
             cls.urdf = f.read()
         cls.rosout = Rosout()
+        cls.rosout.connected('/gazebo')   # its warnings must reach us
         cls.odom = Watch('/spawned/odom', Odometry, keep=True)
         cls.image = Watch('/spawned/front/image_raw', Image, keep=True)
         cls.info = Watch('/spawned/front/camera_info', CameraInfo)

@@ -8,6 +8,7 @@ import math
 import os
 import signal
 import threading
+import time
 import unittest
 import xmlrpc.client
 
@@ -45,7 +46,21 @@ class Watch(object):
     def __init__(self, topic, cls, keep=False):
         self.msg, self.count, self.all = None, 0, [] if keep else None
         self.lock = threading.Lock()
-        rospy.Subscriber(topic, cls, self._cb, queue_size=100)
+        self.topic = topic
+        self.sub = rospy.Subscriber(topic, cls, self._cb, queue_size=100)
+
+    def connected(self, node, wall_seconds=20.0):
+        """Wait (wall time) until ``node`` publishing the topic is connected
+        to us: what it publishes from then on reaches us (not latched topics
+        lose what comes before)."""
+        master = rosgraph.Master(rospy.get_name())
+        deadline = time.monotonic() + wall_seconds
+        while time.monotonic() < deadline:
+            publishers = dict(master.getSystemState()[0]).get(self.topic, [])
+            if node in publishers and self.sub.get_num_connections() >= len(publishers):
+                return True
+            time.sleep(0.05)
+        raise AssertionError('%s never connected its %s to us' % (node, self.topic))
 
     def _cb(self, msg):
         with self.lock:
