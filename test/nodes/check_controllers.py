@@ -4,6 +4,7 @@ its renamed controller moves the head, its joint-state rate is used, bad
 entries get one warning each, and the default controller keeps working."""
 import unittest
 
+import rosparam
 import rospy
 import rostest
 from controller_manager_msgs.srv import ListControllers
@@ -11,7 +12,7 @@ from rosgraph_msgs.msg import Log
 from sensor_msgs.msg import JointState
 from std_msgs.msg import Float64
 
-from checks import Rosout, Watch, clock, wait_for_subscribers, wait_until
+from checks import Rosout, Watch, clock, eventually, wait_for_subscribers
 
 USER_YAML = {
     'joint_state_controller': {'type': 'joint_state_controller/JointStateController',
@@ -33,9 +34,9 @@ class TestControllers(unittest.TestCase):
         cls.rosout = Rosout()
         cls.rosout.connected('/gazebo')   # its warnings must reach us
         cls.joints = Watch('/robot/joint_states', JointState, keep=True)
+        cls.joints.connected('/gazebo')      # the first messages come at once (rtf 0)
         cls.joints.next(30.0)
-        for name, config in USER_YAML.items():          # what rosparam load does
-            rospy.set_param('/robot/' + name, config)
+        rosparam.upload_params('/robot', USER_YAML)     # what rosparam load does: leaf by leaf
 
     def head(self):
         msg = self.joints.msg
@@ -46,7 +47,7 @@ class TestControllers(unittest.TestCase):
                               latch=True)
         wait_for_subscribers(pub)
         pub.publish(Float64(value))
-        self.assertTrue(wait_until(lambda: abs(self.head() - value) < 0.03, 5.0),
+        self.assertTrue(eventually(lambda: abs(self.head() - value) < 0.03),
                         '%s: head at %.3f, not %.3f' % (controller, self.head(), value))
 
     def test_the_renamed_controller_and_the_default_one_move_the_head(self):
@@ -54,7 +55,11 @@ class TestControllers(unittest.TestCase):
         self.command('joint_position_controller', -0.4)
 
     def test_the_yaml_s_joint_state_rate_is_used(self):
-        clock().sleep(1.0)                           # the new rate in force
+        def at_20_hz():           # the last few messages 0.05 s apart
+            stamps = [m.header.stamp.to_sec() for m in self.joints.all[-5:]]
+            return len(stamps) == 5 and all(abs(b - a - 0.05) < 1e-3
+                                            for a, b in zip(stamps, stamps[1:]))
+        self.assertTrue(eventually(at_20_hz))
         start = len(self.joints.all)
         clock().sleep(4.0)
         stamps = [m.header.stamp.to_sec() for m in self.joints.all[start:]]
@@ -65,14 +70,18 @@ class TestControllers(unittest.TestCase):
     def test_bad_entries_get_one_warning_each(self):
         for name, words in (('arm_controller', "joint 'arm_joint_01' is not a joint"),
                             ('gripper_controller', 'is not simulated here')):
-            self.assertTrue(wait_until(lambda: self.rosout.lines(words, Log.WARN), 5.0), name)
+            self.assertTrue(eventually(lambda: self.rosout.lines(words, Log.WARN)), name)
             self.assertEqual(len(self.rosout.lines('controller %s:' % name, Log.WARN)), 1)
 
     def test_the_controller_manager_lists_them(self):
         rospy.wait_for_service('/robot/controller_manager/list_controllers', 10.0)
-        listed = rospy.ServiceProxy('/robot/controller_manager/list_controllers',
-                                    ListControllers)().controller
-        running = {c.name: c.type for c in listed if c.state == 'running'}
+        lister = rospy.ServiceProxy('/robot/controller_manager/list_controllers',
+                                    ListControllers)
+
+        def running():
+            return {c.name: c.type for c in lister().controller if c.state == 'running'}
+        self.assertTrue(eventually(lambda: 'joint_head_controller' in running()))
+        running = running()
         self.assertEqual(running['joint_head_controller'],
                          'effort_controllers/JointPositionController')
         self.assertIn('joint_position_controller', running)

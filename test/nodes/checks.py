@@ -40,6 +40,19 @@ def wait_until(predicate, ros_seconds):
     return clock().wait_until(predicate, ros_seconds)
 
 
+def eventually(predicate, ros_seconds=10.0, wall_seconds=10.0):
+    """True once ``predicate()`` holds; False only after both ``ros_seconds``
+    of ROS time and ``wall_seconds`` of wall time: for what takes wall time
+    too (a connection, a debounce), which at real_time_factor 0 is many
+    simulated seconds."""
+    wall_end = time.monotonic() + wall_seconds
+    while True:
+        if wait_until(predicate, ros_seconds):
+            return True
+        if time.monotonic() >= wall_end:
+            return False
+
+
 class Watch(object):
     """The latest message of a topic (and, with ``keep``, all of them)."""
 

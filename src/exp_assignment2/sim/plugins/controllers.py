@@ -1,5 +1,7 @@
 """The controllers gazebo_ros_control runs, and their manager's services
 (see :mod:`.ros_control`)."""
+import copy
+
 import rospy
 from controller_manager_msgs.msg import ControllerState, HardwareInterfaceResources
 from controller_manager_msgs.srv import (ListControllers, ListControllersResponse,
@@ -179,7 +181,9 @@ class ControllerManager(object):
 
     def discover(self, params):
         """Start what ``params`` (the namespace's parameters) declares anew."""
-        declared = {n: c for n, c in params.items() if isinstance(c, dict) and 'type' in c}
+        # copies: the parameters may be rospy's cache, which updates in place
+        declared = {n: copy.deepcopy(c) for n, c in params.items()
+                    if isinstance(c, dict) and 'type' in c}
         for name, config in declared.items():
             if self.declared.get(name) == config and (name in self.running or
                                                       name in self.stopped):

@@ -8,6 +8,7 @@ callback, and keys that appear under the namespace after the subscription
 (rospy's cache refuses keys it has not seen). :func:`watch_namespace` adds
 both, on the process's one cache.
 """
+import copy
 import threading
 
 import rospy
@@ -46,8 +47,8 @@ def watch_namespace(namespace, callback):
     with _lock:
         _install()
         _watchers.setdefault(resolved, []).append(callback)
-    try:
-        return rospy.get_param_cached(resolved.rstrip('/') or '/')
+    try:   # a copy: rospy's cache changes in place with every update
+        return copy.deepcopy(rospy.get_param_cached(resolved.rstrip('/') or '/'))
     except KeyError:
         return {}
 

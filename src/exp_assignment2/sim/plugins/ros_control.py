@@ -5,7 +5,8 @@ would run them.
 Every controller declared on the parameter server under ``<ns>`` (``<ns>/
 <name>/type`` and its other keys) is served, whether the YAML was loaded
 before the model was spawned or after (the parameter server tells the
-plugin; see :mod:`.param_watch`):
+plugin, see :mod:`.param_watch`; a YAML arrives one parameter at a time, so it
+is read once the parameters have been still for 0.2 s):
 
 * ``joint_state_controller/JointStateController``: ``<ns>/joint_states`` of
   every movable joint at ``publish_rate`` Hz of simulated time;
@@ -22,11 +23,15 @@ one warning and is ignored. ``<ns>/controller_manager/load_controller``,
 as ros_control's controller manager does (``controller_manager spawner``
 uses them); a controller unloaded there stays unloaded until loaded again.
 """
+import threading
+
 import rospy
 
 from exp_assignment2.sim.plugins import param_watch
 from exp_assignment2.sim.plugins.base import Plugin
 from exp_assignment2.sim.plugins.controllers import CONTROLLER_TYPES, ControllerManager
+
+SETTLE = 0.2      # wall s without a parameter update before the namespace is read again
 
 
 class RosControlPlugin(Plugin):
@@ -38,12 +43,20 @@ class RosControlPlugin(Plugin):
     def load(self):
         self.ns = '/' + self.namespace if self.namespace else ''
         self.manager = ControllerManager(self, self.ns)
+        self._lock, self._timer = threading.Lock(), None
         initial = param_watch.watch_namespace(self.ns or '/', self._on_params)
         self.manager.discover(initial if isinstance(initial, dict) else {})
 
     def _on_params(self, key):
-        # rospy's XML-RPC thread: re-read in the simulation thread
-        self.engine.call_soon(self._rescan)
+        # rospy's XML-RPC thread. A YAML is loaded one parameter at a time
+        # (rosparam load sets each leaf): read the namespace once the burst is
+        # over, so a half-loaded controller is neither started nor warned about
+        with self._lock:
+            if self._timer is not None:
+                self._timer.cancel()
+            self._timer = threading.Timer(SETTLE, self.engine.call_soon, (self._rescan,))
+            self._timer.daemon = True
+            self._timer.start()
 
     def _rescan(self):
         try:
@@ -63,6 +76,9 @@ class RosControlPlugin(Plugin):
 
     def close(self):
         param_watch.unwatch_namespace(self.ns or '/', self._on_params)
+        with self._lock:
+            if self._timer is not None:
+                self._timer.cancel()
         self.manager.close()
 
 
