@@ -31,8 +31,20 @@ NODE_PARAMS = {'real_time_factor': 1.0, 'time_step': 0.01, 'renderer': 'gl', 'pa
                'cmd_timeout': 0.5, 'max_linear': 2.0, 'max_angular': 3.0,
                'camera_width': None, 'camera_height': None, 'camera_rate': None,
                'camera_hfov': None, 'jpeg_quality': 80, 'wait_for_camera': False,
-               'start_timeout': 30.0, 'hidden': [], 'urdf_dir': None, 'world_file': '',
+               'start_timeout': 30.0, 'hidden': [], 'urdf_dir': None, 'world_file': None,
                'robot_ns': '', 'poses': {}}
+
+
+# Gazebo's worlds/empty.world: a ground plane and a sun
+EMPTY_WORLD = ('<sdf version="1.6"><world name="default">'
+               '<include><uri>model://ground_plane</uri></include>'
+               '<include><uri>model://sun</uri></include></world></sdf>')
+
+
+def sdf_to_urdf(text, name):
+    """spawn_sdf_model's model as URDF text (ValueError saying why not)."""
+    from exp_assignment2.sim import sdf
+    return sdf.model_to_urdf(text, name)
 
 
 class SimulatorNode(object):
@@ -70,15 +82,27 @@ class SimulatorNode(object):
             unknown = hidden - set(self.engine.models)
             if unknown:
                 raise ValueError('~hidden: %s: no such model' % ', '.join(sorted(unknown)))
+            if p['world_file'] is not None:         # gazebo_ros' gzserver: an SDF world
+                self._spawn_sdf_world(str(p['world_file']))
         except ValueError:
             self.engine.close()
             raise
-        self.world = GazeboWorld(self.engine)
+        self.world = GazeboWorld(self.engine, sdf_to_urdf=sdf_to_urdf)
         self.state = GazeboState(self.engine, self.world)
         self.markers = WorldMarkers(self.engine)
         rospy.loginfo('simulator: %d models, step %.4f s, real_time_factor %g%s',
                       len(self.engine.models), self.engine.time_step, self.engine.pacer.rtf,
                       ', paused' if self.engine.paused else '')
+
+    def _spawn_sdf_world(self, path):
+        """The models of an SDF world file ('' : Gazebo's empty world)."""
+        from exp_assignment2.sim import sdf
+        world = sdf.read_world(path or EMPTY_WORLD)
+        for note in world.notes:
+            rospy.loginfo('simulator: %s', note)
+        for model in world.models:
+            self.engine.spawn(model.name, model.urdf, model.pose,
+                              grid=model.name == 'ground_plane')
 
     def _urdf_dir(self):
         # with original-env --package, exp_assignment2 is the user's package:
