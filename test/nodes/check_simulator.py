@@ -17,7 +17,7 @@ from std_msgs.msg import Float64
 from std_srvs.srv import Empty
 from visualization_msgs.msg import MarkerArray
 
-from checks import Pose, Rosout, Watch, clock, wait_for_subscribers, wait_until
+from checks import Pose, Rosout, Watch, clock, eventually, wait_for_subscribers, wait_until
 from exp_assignment2.geometry import yaw_of
 from exp_assignment2.sim import urdf
 from exp_assignment2.vision import BallDetector, decode_jpeg
@@ -189,9 +189,13 @@ class TestSimulator(unittest.TestCase):
 
     def test_tf_has_the_camera_and_its_yaw_follows_the_head(self):
         frame = self.info.next().header.frame_id
+        def head_at(angle):
+            msg = self.joints.msg
+            return abs(msg.position[msg.name.index('head_joint')] - angle) < 0.01
         for angle in (0.6, -0.6, 0.0):
             self.head.publish(Float64(angle))
-            clock().sleep(1.5)
+            # the command takes wall time to arrive: many simulated s at rtf 0
+            self.assertTrue(eventually(lambda: head_at(angle)), 'the head never got to %g' % angle)
             stamp = self.odom.next().header.stamp
             camera = self.tf.lookup_transform('odom', frame, stamp, rospy.Duration(5.0))
             q = camera.transform.rotation
