@@ -10,8 +10,6 @@ import os
 
 import numpy as np
 
-from exp_assignment2.sim.urdf_shapes import rpy_matrix
-
 PLANE_THICKNESS = 0.02      # a <plane> becomes a box this thick whose top face is the plane
 DEFAULT_RGBA = (0.7, 0.7, 0.7, 1.0)
 # Gazebo's stock material scripts (media/materials/scripts/gazebo.material), by their
@@ -75,6 +73,15 @@ def pose_of(elem, where):
     if pose.get('degrees', 'false') in ('true', '1'):
         values[3:] = [math.radians(v) for v in values[3:]]
     return transform(values[:3], values[3:])
+
+
+def rpy_matrix(roll, pitch, yaw):
+    """3x3 rotation of URDF fixed-axis roll/pitch/yaw: Rz(yaw) Ry(pitch) Rx(roll)."""
+    cr, sr, cp, sp = math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch)
+    cy, sy = math.cos(yaw), math.sin(yaw)
+    return np.array([[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+                     [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+                     [-sp, cp * sr, cp * cr]])
 
 
 def transform(xyz, rpy):
