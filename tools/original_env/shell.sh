@@ -19,6 +19,7 @@ export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"
 
 APT_PACKAGES=(python3-tf python3-scipy python3-opencv python3-numpy python3-pip)
 IMUTILS_VERSION=0.5.4
+XACRO_VERSION=1.13.3    # ROS 1's xacro (PyPI's 2.x is ROS 2's), for $(find xacro)/xacro
 
 log() { printf '[original-env] %s\n' "$*" >&2; }
 as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
@@ -39,6 +40,12 @@ if ! /usr/bin/python3 -c 'import imutils' 2>/dev/null; then
     --root-user-action=ignore "imutils==$IMUTILS_VERSION"
 fi
 
+if ! /usr/bin/python3 -c 'import xacro' 2>/dev/null; then
+  log "installing xacro==$XACRO_VERSION from PyPI for /usr/bin/python3"
+  as_root /usr/bin/python3 -m pip install -q --break-system-packages \
+    --root-user-action=ignore "xacro==$XACRO_VERSION"
+fi
+
 if [ ! -f "$WS/devel/setup.bash" ]; then
   log "no catkin workspace at $WS: build it first with: bash tools/run setup"
   exit 1
@@ -54,6 +61,11 @@ export EXP2_ORIGINAL_BIN="$WS/original_env_bin"
 mkdir -p "$EXP2_ORIGINAL_BIN"
 ln -sfn /usr/bin/python3 "$EXP2_ORIGINAL_BIN/python"
 
+# gazebo_ros, xacro and controller_manager for the user's launch files, executable
+# (packages/README.md); env.py puts them first on ROS_PACKAGE_PATH.
+EXP2_LAUNCH_PACKAGES=$(/usr/bin/python3 "$HERE/launch_packages.py" "$WS")
+export EXP2_LAUNCH_PACKAGES
+
 # Decided now, with the real interpreter and the workspace's PYTHONPATH, so a
 # real smach (or smach_ros) is never shadowed.
 eval "$(/usr/bin/python3 "$HERE/env.py")"
@@ -62,7 +74,9 @@ log "enabled: $EXP2_ORIGINAL_ENV"
 if [ $# -gt 0 ]; then
   exec "$@"
 fi
-# ~/.bashrc may put another python3 (pyenv) first again: restore ours after it.
+# ~/.bashrc may put another python3 (pyenv) first again, or source another ROS
+# setup: restore ours after it.
 exec bash --rcfile <(printf '%s\n' '[ -f ~/.bashrc ] && . ~/.bashrc' \
   "export PATH=$(printf %q "$PATH") PYTHONPATH=$(printf %q "$PYTHONPATH")" \
+  "export ROS_PACKAGE_PATH=$(printf %q "$ROS_PACKAGE_PATH")" \
   'PS1="(original-env) $PS1"') -i
