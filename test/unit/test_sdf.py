@@ -179,6 +179,15 @@ def test_an_installed_collada_mesh_needs_a_known_size(tmp_path):
 
 # includes
 
+def test_what_gazebo_makes_but_the_simulator_does_not_is_skipped_with_a_note():
+    w = read_world(world(box_model('m') + "<actor name='walker'><skin/></actor>"
+                         "<plugin name='p' filename='libworld_thing.so'/>"
+                         "<light name='lamp' type='point'/>"), model_path=[])
+    assert [m.name for m in w.models] == ['m']
+    assert w.notes == ['world/actor[walker]: animated actors are not simulated here: skipped',
+                       'world/plugin[p]: world plugins are not simulated here: skipped']
+
+
 def test_gazebo_stock_includes_ground_plane_and_sun():
     w = read_world(world('<include><uri>model://ground_plane</uri></include>'
                          '<include><uri>model://sun</uri></include>'), model_path=[])

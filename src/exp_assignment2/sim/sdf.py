@@ -9,7 +9,7 @@ URDF robot per model (:mod:`.sdf_model`).
   static)] in the file's order, each at its pose, or at the pose the world's
   saved ``<state>`` gives it (as Gazebo applies the first state on load);
   ``gravity``; ``physics`` (the numbers of ``<physics>``); ``notes`` (one line
-  per stand-in used).
+  per stand-in used, one per element skipped).
 * :func:`model_to_urdf`: one SDF model (or a world holding one model or
   include, as ``spawn_model -database`` sends) as URDF text.
 
@@ -18,7 +18,8 @@ STL/OBJ meshes that are installed. Any other mesh becomes a box of the model's
 known size from ``config/gazebo_model_sizes.yaml``. ``<include>`` of
 ``model://NAME``: the installed model (``GAZEBO_MODEL_PATH``,
 ``~/.gazebo/models``), else Gazebo's ``ground_plane`` and ``sun``, else a box
-of the known size. Lights are not simulated and are skipped. What cannot be
+of the known size. Lights are not simulated and are skipped; actors,
+populations, roads and world plugins are skipped with a note. What cannot be
 read raises :class:`SdfError` naming the element, e.g.
 ``world/model[wall]/link[link]/visual[v]/geometry: unknown shape <heightmap>``.
 """
@@ -31,6 +32,10 @@ from exp_assignment2.sim.sdf_sources import SIZES_FILE, Sources, load_model_size
 
 __all__ = ['SdfError', 'SdfWorld', 'WorldModel', 'read_world', 'model_to_urdf', 'model_pose',
            'load_model_sizes', 'SIZES_FILE']
+
+# world elements that make something in Gazebo but not here: one note each
+NOT_SIMULATED = {'actor': 'animated actors', 'population': 'populations of models',
+                 'road': 'roads', 'plugin': 'world plugins'}
 
 WorldModel = namedtuple('WorldModel', 'name urdf pose static')
 WorldModel.__doc__ = """A model of a world: URDF text, pose (x, y, z, roll,
@@ -74,7 +79,7 @@ def read_world(path_or_text, sizes=None, model_path=None):
     saved = {} if state is None else {
         m.get('name'): pose_of(m, 'world/state/model[%s]' % m.get('name'))
         for m in state.findall('model') if m.find('pose') is not None}
-    models, names = [], set()
+    models, names, skipped = [], set(), []
     for child in world:
         context.model = child.get('name') or child.findtext('name', '') or \
             child.findtext('uri', '')
@@ -85,6 +90,9 @@ def read_world(path_or_text, sizes=None, model_path=None):
             if model is None:
                 continue
         else:
+            if child.tag in NOT_SIMULATED:
+                skipped.append('world/%s[%s]: %s are not simulated here: skipped' % (
+                    child.tag, child.get('name', ''), NOT_SIMULATED[child.tag]))
             continue
         if model.name in names:
             raise SdfError('world/model[%s]: two models are called %r' % (model.name,
@@ -94,7 +102,8 @@ def read_world(path_or_text, sizes=None, model_path=None):
         pose = saved.get(model.name, model.pose)
         models.append(WorldModel(model.name, urdf, pose_tuple(pose),
                                  model.static or model.fixed_to_world))
-    return SdfWorld(world.get('name', 'default'), models, gravity, physics, context.notes())
+    return SdfWorld(world.get('name', 'default'), models, gravity, physics,
+                    context.notes() + skipped)
 
 
 def _floats_or_error(text, where, count=3):
