@@ -204,7 +204,7 @@ def test_xacro_drops_inorder_only():
     assert xacro_argv(['-i', 'a.xacro']) == ['a.xacro']
 
 
-def test_xacro_runs_the_students_robot_with_find_resolved():
+def test_xacro_runs_the_students_robot_with_find_resolved(tmp_path):
     """Runs the stand-in executable as roslaunch's command= runs it; needs PyPI's
     xacro, which tools/run original-env installs."""
     check = subprocess.run(['/usr/bin/python3', '-c', 'import xacro'], stderr=subprocess.PIPE)
@@ -212,8 +212,9 @@ def test_xacro_runs_the_students_robot_with_find_resolved():
         pytest.skip('xacro not installed for /usr/bin/python3 (tools/run original-env '
                     'installs it)')
     # the fixture is a package named exp_assignment2: $(find exp_assignment2) must give it
-    env = dict(os.environ, ROS_PACKAGE_PATH=os.path.join(REPO, 'test', 'fixtures'),
-               EXP2_REPO=REPO)
+    # (alone on the path: test/fixtures may hold other packages of that name)
+    os.symlink(STUDENT, str(tmp_path / 'exp_assignment2'))
+    env = dict(os.environ, ROS_PACKAGE_PATH=str(tmp_path), EXP2_REPO=REPO)
     proc = subprocess.run(['/usr/bin/python3', os.path.join(PACKAGES, 'xacro', 'xacro'),
                            '--inorder',
                            os.path.join(STUDENT, 'urdf', 'robot.xacro')], env=env,
