@@ -73,8 +73,8 @@ def main():
     rospy.loginfo('gzclient: rviz on display %s (%s)', display, CONFIG)
     closed = threading.Event()
     threading.Thread(target=lambda: (rviz.wait(), closed.set()), daemon=True).start()
-    if stop.wait(closed):
-        rospy.loginfo('gzclient: the viewer window was closed')
+    if stop.wait(closed):       # the window was closed, or rviz could not start
+        rospy.loginfo('gzclient: rviz ended (exit status %d)', rviz.returncode)
     rviz.terminate()
     try:
         rviz.wait(timeout=5)
