@@ -24,6 +24,7 @@ export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"
 
 APT_PACKAGES=(python3-tf python3-scipy python3-opencv python3-numpy python3-pip python3-cv-bridge)
 IMUTILS_VERSION=0.5.4
+XACRO_VERSION=1.13.3    # ROS 1's xacro (PyPI's 2.x is ROS 2's), for $(find xacro)/xacro
 
 log() { printf '[original-env] %s\n' "$*" >&2; }
 as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
@@ -49,6 +50,12 @@ if ! /usr/bin/python3 -c 'import imutils' 2>/dev/null; then
   log "installing imutils==$IMUTILS_VERSION from PyPI for /usr/bin/python3"
   as_root /usr/bin/python3 -m pip install -q --break-system-packages \
     --root-user-action=ignore "imutils==$IMUTILS_VERSION"
+fi
+
+if ! /usr/bin/python3 -c 'import xacro' 2>/dev/null; then
+  log "installing xacro==$XACRO_VERSION from PyPI for /usr/bin/python3"
+  as_root /usr/bin/python3 -m pip install -q --break-system-packages \
+    --root-user-action=ignore "xacro==$XACRO_VERSION"
 fi
 
 if [ ! -f "$WS/devel/setup.bash" ]; then
@@ -78,6 +85,11 @@ for name in python python3; do
   mv -f "$EXP2_ORIGINAL_BIN/.$name.$$" "$EXP2_ORIGINAL_BIN/$name"
 done
 
+# gazebo_ros, xacro and controller_manager for the user's launch files, executable
+# (packages/README.md); env.py puts them first on ROS_PACKAGE_PATH.
+EXP2_LAUNCH_PACKAGES=$(/usr/bin/python3 "$HERE/launch_packages.py" "$WS")
+export EXP2_LAUNCH_PACKAGES
+
 # Decided now, with the real interpreter and the workspace's PYTHONPATH, so a
 # real smach (or smach_ros) is never shadowed.
 eval "$(/usr/bin/python3 "$HERE/env.py")"
@@ -86,7 +98,8 @@ log "enabled: $EXP2_ORIGINAL_ENV"
 if [ $# -gt 0 ]; then
   exec "$@"
 fi
-# ~/.bashrc may put another python3 (pyenv) first again: restore ours after it.
+# ~/.bashrc may put another python3 (pyenv) first again, or source another ROS
+# setup: restore ours after it.
 exec bash --rcfile <(printf '%s\n' '[ -f ~/.bashrc ] && . ~/.bashrc' \
   "export PATH=$(printf %q "$PATH") PYTHONPATH=$(printf %q "$PYTHONPATH")" \
   "export ROS_PACKAGE_PATH=$(printf %q "$ROS_PACKAGE_PATH")" \

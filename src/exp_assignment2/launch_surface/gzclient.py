@@ -1,0 +1,84 @@
+"""gazebo_ros' ``gzclient``: the viewer, or one line when there is no display.
+
+With a display, rviz opens with the package's config (:mod:`.viewer`), and
+this node broadcasts the models' and links' poses from ``/gazebo/model_states``
+and ``/gazebo/link_states`` as TF frames for it, at most 20 times a second;
+closing the window ends the node, as closing Gazebo's client does. Without a
+display it says so in one line and waits until it is stopped (SIGINT or
+SIGTERM, :mod:`.stopping`), so a launch file's ``gui:=true`` works headless.
+"""
+import os
+import subprocess
+import threading
+import time
+
+import rospy
+import tf2_ros
+from gazebo_msgs.msg import LinkStates, ModelStates
+from geometry_msgs.msg import TransformStamped
+
+from exp_assignment2.launch_surface import viewer
+from exp_assignment2.launch_surface.stopping import Stop
+
+CONFIG = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..',
+                                       '..', 'tools', 'original_env', 'packages', 'gazebo_ros',
+                                       'rviz', 'gzclient.rviz'))
+PERIOD = 0.05       # wall s between two broadcasts of the same topic's frames
+
+
+class FrameBroadcaster(object):
+    """Model and link states -> TF frames under ``world``, rate-limited."""
+
+    def __init__(self):
+        self.tf = tf2_ros.TransformBroadcaster()
+        self.last = {}
+        rospy.Subscriber('/gazebo/model_states', ModelStates, self.on_states, 'models',
+                         queue_size=1)
+        rospy.Subscriber('/gazebo/link_states', LinkStates, self.on_states, 'links',
+                         queue_size=1)
+
+    def on_states(self, msg, which):
+        now = time.monotonic()
+        if now - self.last.get(which, 0.0) < PERIOD:
+            return
+        self.last[which] = now
+        stamp = rospy.Time.now()
+        out = []
+        for frame, pose in viewer.frames(msg.name, msg.pose):
+            t = TransformStamped()
+            t.header.stamp, t.header.frame_id, t.child_frame_id = stamp, viewer.WORLD_FRAME, frame
+            t.transform.translation.x = pose.position.x
+            t.transform.translation.y = pose.position.y
+            t.transform.translation.z = pose.position.z
+            t.transform.rotation = pose.orientation
+            out.append(t)
+        if out:
+            self.tf.sendTransform(out)
+
+
+def main():
+    """The gzclient executable (Gazebo's client options are accepted and unused)."""
+    stop = Stop()
+    rospy.init_node('gazebo_gui', disable_signals=True)
+    display = viewer.display_of(os.environ)
+    if display is None:
+        rospy.loginfo('gzclient: no display (DISPLAY is not set), so no viewer window; the '
+                      'simulation runs on. Set DISPLAY (or run under xvfb-run) to see it in rviz')
+        stop.wait()
+        rospy.signal_shutdown('gzclient stopped')
+        return 0
+    FrameBroadcaster()
+    name = rospy.get_name().rsplit('/', 1)[-1] + '_rviz'
+    rviz = subprocess.Popen(['rviz', '-d', CONFIG, '__name:=' + name])
+    rospy.loginfo('gzclient: rviz on display %s (%s)', display, CONFIG)
+    closed = threading.Event()
+    threading.Thread(target=lambda: (rviz.wait(), closed.set()), daemon=True).start()
+    if stop.wait(closed):       # the window was closed, or rviz could not start
+        rospy.loginfo('gzclient: rviz ended (exit status %d)', rviz.returncode)
+    rviz.terminate()
+    try:
+        rviz.wait(timeout=5)
+    except subprocess.TimeoutExpired:
+        rviz.kill()
+    rospy.signal_shutdown('gzclient stopped')
+    return 0

@@ -1,0 +1,289 @@
+"""One SDF ``<model>`` as URDF text (plain Python: no ROS, no pybullet).
+
+:func:`read_model` reads a model into plain data (links with their poses,
+inertials, visuals and collisions; joints; plugins), flattening nested models
+and includes into ``nested::link`` names. :func:`model_urdf` writes that as a
+URDF robot whose root link frame is the model frame (URDF has no model pose:
+the spawn pose places it), with a joint per SDF joint, links that have no
+joint fixed to the root, ``<gazebo><static>true</static></gazebo>`` for a
+static model, and the model's ``<plugin>`` and the links' ``<sensor>``
+elements carried over in ``<gazebo>`` tags, as Gazebo's URDF reader expects
+them.
+"""
+import copy
+import xml.etree.ElementTree as ET
+from collections import OrderedDict
+
+import numpy as np
+
+from exp_assignment2.sim.sdf_geometry import (DEFAULT_RGBA, SdfError, child_floats, colour_of,
+                                              floats, pose_of, pose_tuple, shapes_of)
+
+JOINT_TYPES = ('revolute', 'continuous', 'prismatic', 'fixed')
+NO_LIMIT = 1e15             # SDF's default limits are +-1e16: no limit
+DEFAULT_EFFORT, DEFAULT_VELOCITY = 1000.0, 100.0    # where SDF gives none (it says -1)
+
+
+class Model(object):
+    """A model as plain data: ``links`` (name -> Link, the first is the root),
+    ``joints``, ``plugins`` (elements), ``static`` and ``pose`` (4x4, in the
+    parent's frame)."""
+
+    def __init__(self, name, pose, static):
+        self.name, self.pose, self.static = name, pose, static
+        self.links, self.joints, self.plugins, self.fixed_to_world = OrderedDict(), [], [], False
+
+
+class Link(object):
+    """A link: ``pose`` (4x4, model frame), ``inertial`` (mass, 4x4 origin,
+    6 inertia values), ``visuals`` [(name, 4x4, shape, rgba)], ``collisions``
+    [(name, 4x4, shape)], ``sensors`` (elements), ``extras`` (gazebo tags)."""
+
+    def __init__(self, name, pose):
+        self.name, self.pose = name, pose
+        self.inertial = (1.0, np.eye(4), (1.0, 0.0, 0.0, 1.0, 0.0, 1.0))   # SDF's defaults
+        self.visuals, self.collisions, self.sensors, self.extras = [], [], [], {}
+
+
+def flag(elem, tag, default=False):
+    """An SDF boolean child (``1``/``true``)."""
+    text = elem.findtext(tag)
+    return default if text is None else text.strip().lower() in ('1', 'true')
+
+
+def read_model(elem, where, context):
+    """A ``<model>`` element as a :class:`Model`; ``where`` names it in errors."""
+    name = elem.get('name') or ''
+    if not name:
+        raise SdfError('%s: a model needs a name' % where)
+    model = Model(name, pose_of(elem, where), flag(elem, 'static'))
+    for child in elem:
+        if child.tag == 'link':
+            link = _read_link(child, '%s/link[%s]' % (where, child.get('name', '')), context)
+            if link.name in model.links:
+                raise SdfError('%s: two links are called %r' % (where, link.name))
+            model.links[link.name] = link
+        elif child.tag == 'joint':
+            model.joints.append(_read_joint(child, '%s/joint[%s]' % (where, child.get('name', ''))))
+        elif child.tag == 'plugin':
+            model.plugins.append(child)
+        elif child.tag in ('model', 'include'):
+            nested = (read_model(child, '%s/model[%s]' % (where, child.get('name', '')), context)
+                      if child.tag == 'model' else context.include(child, where))
+            _merge(model, nested)
+    if not model.links:
+        raise SdfError('%s: the model has no <link>' % where)
+    return model
+
+
+def _merge(model, nested):
+    prefix = nested.name + '::'
+    for link in nested.links.values():
+        moved = copy.copy(link)
+        moved.name, moved.pose = prefix + link.name, nested.pose.dot(link.pose)
+        model.links[moved.name] = moved
+    for joint in nested.joints:
+        model.joints.append(dict(joint, name=prefix + joint['name'],
+                                 parent=_scoped(prefix, joint['parent']),
+                                 child=prefix + joint['child']))
+    model.plugins.extend(nested.plugins)
+
+
+def _scoped(prefix, link):
+    return link if link == 'world' else prefix + link
+
+
+def _read_link(elem, where, context):
+    if not elem.get('name'):
+        raise SdfError('%s: a link needs a name' % where)
+    link = Link(elem.get('name'), pose_of(elem, where))
+    inertial = elem.find('inertial')
+    if inertial is not None:
+        w = where + '/inertial'
+        mass = child_floats(inertial, 'mass', 1, w, (1.0,))[0]
+        if mass <= 0:
+            raise SdfError('%s/mass: must be positive, not %g' % (w, mass))
+        block = inertial.find('inertia')
+        values = link.inertial[2]
+        if block is not None:
+            values = tuple(child_floats(block, tag, 1, w + '/inertia', (default,))[0]
+                           for tag, default in zip(('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz'),
+                                                   values))
+        link.inertial = (mass, pose_of(inertial, w), values)
+    for kind, out in (('visual', link.visuals), ('collision', link.collisions)):
+        for part in elem.findall(kind):
+            w = '%s/%s[%s]' % (where, kind, part.get('name', ''))
+            pose = pose_of(part, w)
+            coloured = kind == 'visual' and part.find('material') is not None
+            for offset, shape, own in shapes_of(part, w, context):
+                rgba = colour_of(part, w) if coloured else own or DEFAULT_RGBA
+                out.append((part.get('name', kind), pose.dot(offset), shape, rgba))
+    link.sensors = [(sensor, pose_of(sensor, '%s/sensor[%s]' % (where, sensor.get('name', ''))))
+                    for sensor in elem.findall('sensor')]
+    for tag, default in (('gravity', True), ('kinematic', False)):
+        if elem.find(tag) is not None and flag(elem, tag) != default:
+            link.extras[tag] = 'true' if not default else 'false'
+    return link
+
+
+def _read_joint(elem, where):
+    kind = elem.get('type', '')
+    if kind not in JOINT_TYPES:
+        raise SdfError('%s: joint type %r is not supported; accepted: %s'
+                       % (where, kind, ', '.join(JOINT_TYPES)))
+    parent, child = elem.findtext('parent', '').strip(), elem.findtext('child', '').strip()
+    if not parent or not child:
+        raise SdfError('%s: a joint needs a <parent> and a <child>' % where)
+    joint = {'name': elem.get('name') or child, 'type': kind, 'parent': parent,
+             'child': child, 'pose': pose_of(elem, where), 'where': where,
+             'axis': (1.0, 0.0, 0.0), 'in_model_frame': False, 'limit': {}}
+    axis = elem.find('axis')
+    if axis is not None:
+        xyz = axis.find('xyz')
+        if xyz is not None:
+            joint['axis'] = tuple(floats(xyz.text, 3, where + '/axis/xyz', 'an axis'))
+            joint['in_model_frame'] = xyz.get('expressed_in') == '__model__'
+        joint['in_model_frame'] |= flag(axis, 'use_parent_model_frame')
+        limit = axis.find('limit')
+        if limit is not None:
+            for tag in ('lower', 'upper', 'effort', 'velocity'):
+                if limit.find(tag) is not None:
+                    joint['limit'][tag] = child_floats(limit, tag, 1, where + '/axis/limit')[0]
+    return joint
+
+
+def model_urdf(model):
+    """URDF text of a :class:`Model` (its own pose is left out)."""
+    links = list(model.links.values())
+    root = links[0]
+    frames = {root.name: np.eye(4)}             # each link's URDF frame, in the model frame
+    joints, children = [], {}
+    for joint in model.joints:
+        if joint['parent'] == 'world':
+            if joint['type'] != 'fixed':
+                raise SdfError('%s: only a fixed joint can hold a model to the world'
+                               % joint['where'])
+            model.fixed_to_world = True
+            continue
+        for end in ('parent', 'child'):
+            if joint[end] not in model.links:
+                raise SdfError('%s: no link %r in model %s' % (joint['where'], joint[end],
+                                                               model.name))
+        if joint['child'] in children or joint['child'] == root.name:
+            raise SdfError('%s: link %r already has a parent; a model must be a tree'
+                           % (joint['where'], joint['child']))
+        children[joint['child']] = joint
+    for link in links[1:]:      # a link without a joint is fixed to the root, where it is
+        children.setdefault(link.name, {'name': 'fixed_' + link.name, 'type': 'fixed',
+                                        'parent': root.name, 'child': link.name,
+                                        'pose': np.eye(4), 'axis': (1, 0, 0),
+                                        'in_model_frame': False, 'limit': {}, 'where': ''})
+    pending = dict(children)
+    while pending:
+        ready = [j for j in pending.values() if j['parent'] in frames]
+        if not ready:
+            raise SdfError('model %s: joints form a loop or miss the root link %r: %s'
+                           % (model.name, root.name, ', '.join(sorted(pending))))
+        for joint in ready:
+            child = model.links[joint['child']]
+            frames[child.name] = child.pose.dot(joint['pose'])
+            joints.append(joint)
+            del pending[joint['child']]
+    robot = ET.Element('robot', name=model.name)
+    for link in links:
+        _write_link(robot, link, np.linalg.inv(frames[link.name]).dot(link.pose))
+    for joint in joints:
+        _write_joint(robot, joint, frames)
+    if model.static or model.fixed_to_world:
+        ET.SubElement(ET.SubElement(robot, 'gazebo'), 'static').text = 'true'
+    for plugin in model.plugins:
+        ET.SubElement(robot, 'gazebo').append(copy.deepcopy(plugin))
+    for link in links:
+        _write_gazebo_link(robot, link, np.linalg.inv(frames[link.name]).dot(link.pose))
+    ET.indent(robot)
+    return ET.tostring(robot, encoding='unicode') + '\n'
+
+
+def _num(value):
+    return '%.9g' % (float(value) + 0.0)
+
+
+def _origin(parent, m):
+    x, y, z, roll, pitch, yaw = pose_tuple(m)
+    ET.SubElement(parent, 'origin', xyz=' '.join(_num(v) for v in (x, y, z)),
+                  rpy=' '.join(_num(v) for v in (roll, pitch, yaw)))
+
+
+def _shape(parent, shape):
+    kind, params = shape
+    geometry = ET.SubElement(parent, 'geometry')
+    if kind == 'box':
+        ET.SubElement(geometry, 'box', size=' '.join(_num(v) for v in params['size']))
+    elif kind == 'cylinder':
+        ET.SubElement(geometry, 'cylinder', radius=_num(params['radius']),
+                      length=_num(params['length']))
+    elif kind == 'sphere':
+        ET.SubElement(geometry, 'sphere', radius=_num(params['radius']))
+    else:
+        ET.SubElement(geometry, 'mesh', filename=params['filename'],
+                      scale=' '.join(_num(v) for v in params['scale']))
+
+
+def _write_link(robot, link, to_urdf):
+    out = ET.SubElement(robot, 'link', name=link.name)
+    mass, origin, inertia = link.inertial
+    inertial = ET.SubElement(out, 'inertial')
+    _origin(inertial, to_urdf.dot(origin))
+    ET.SubElement(inertial, 'mass', value=_num(mass))
+    ET.SubElement(inertial, 'inertia', **{k: _num(v) for k, v in zip(
+        ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz'), inertia)})
+    for index, (name, pose, shape, rgba) in enumerate(link.visuals):
+        visual = ET.SubElement(out, 'visual', name=name)
+        _origin(visual, to_urdf.dot(pose))
+        _shape(visual, shape)
+        material = ET.SubElement(visual, 'material', name='%s_%s_%d' % (link.name, name, index))
+        ET.SubElement(material, 'color', rgba=' '.join(_num(v) for v in rgba))
+    for name, pose, shape, _ in link.collisions:
+        collision = ET.SubElement(out, 'collision', name=name)
+        _origin(collision, to_urdf.dot(pose))
+        _shape(collision, shape)
+
+
+def _write_joint(robot, joint, frames):
+    kind, limit = joint['type'], joint['limit']
+    lower, upper = limit.get('lower', -NO_LIMIT * 10), limit.get('upper', NO_LIMIT * 10)
+    if kind == 'revolute' and lower <= -NO_LIMIT and upper >= NO_LIMIT:
+        kind = 'continuous'
+    out = ET.SubElement(robot, 'joint', name=joint['name'], type=kind)
+    ET.SubElement(out, 'parent', link=joint['parent'])
+    ET.SubElement(out, 'child', link=joint['child'])
+    _origin(out, np.linalg.inv(frames[joint['parent']]).dot(frames[joint['child']]))
+    if kind == 'fixed':
+        return
+    axis = np.asarray(joint['axis'], float)
+    if joint['in_model_frame']:
+        axis = frames[joint['child']][:3, :3].T.dot(axis)
+    ET.SubElement(out, 'axis', xyz=' '.join(_num(v) for v in axis))
+    effort = limit.get('effort', -1)
+    velocity = limit.get('velocity', -1)
+    attrs = {'effort': _num(effort if effort >= 0 else DEFAULT_EFFORT),
+             'velocity': _num(velocity if velocity >= 0 else DEFAULT_VELOCITY)}
+    if kind != 'continuous':
+        attrs.update(lower=_num(max(lower, -NO_LIMIT)), upper=_num(min(upper, NO_LIMIT)))
+    ET.SubElement(out, 'limit', **attrs)
+
+
+def _write_gazebo_link(robot, link, to_urdf):
+    if not link.sensors and not link.extras:
+        return
+    tag = ET.SubElement(robot, 'gazebo', reference=link.name)
+    for key, value in link.extras.items():
+        ET.SubElement(tag, key).text = value
+    for sensor, sensor_pose in link.sensors:
+        moved = copy.deepcopy(sensor)
+        pose = moved.find('pose')
+        if pose is None:
+            pose = ET.SubElement(moved, 'pose')
+        pose.attrib.clear()
+        pose.text = ' '.join(_num(v) for v in pose_tuple(to_urdf.dot(sensor_pose)))
+        tag.append(moved)

@@ -1,0 +1,258 @@
+"""The Gazebo launch surface's command lines, read without ROS: gzserver,
+spawn_model, controller_manager's spawner, xacro; and the viewer's frames.
+"""
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+from types import SimpleNamespace
+
+import pytest
+
+from exp_assignment2.launch_surface import gzserver, spawn_args, spawner_args, viewer
+from exp_assignment2.launch_surface.xacro_runner import xacro_argv
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.abspath(__file__)))), 'tools', 'original_env'))
+import launch_packages  # noqa: E402
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+PACKAGES = os.path.join(REPO, 'tools', 'original_env', 'packages')
+STUDENT = os.path.join(REPO, 'test', 'fixtures', 'student_pkg')
+
+
+# gzserver
+
+def test_gzserver_reads_a_launch_files_command_line(tmp_path):
+    world = tmp_path / 'arena.world'
+    world.write_text('<sdf/>')
+    # what empty_world.launch-style files give: -u, --verbose, -e ode, the world, ROS args
+    cmd = gzserver.translate(['-u', '--verbose', '-e', 'ode', str(world), '__name:=gazebo',
+                              '__log:=/tmp/gazebo-1.log'])
+    assert cmd == gzserver.ServerCommand(str(world), True, True, [],
+                                         ['__name:=gazebo', '__log:=/tmp/gazebo-1.log'])
+    assert gzserver.simulator_argv(cmd, repo='/r') == [
+        '/usr/bin/python3', '/r/scripts/simulator.py', '__name:=gazebo',
+        '__log:=/tmp/gazebo-1.log', '_world_file:=%s' % json.dumps(str(world)), '_paused:=true']
+
+
+def test_gzserver_empty_world_and_gazebo_resource_path(tmp_path):
+    assert gzserver.translate(['-e', 'ode', 'worlds/empty.world']).world is None
+    assert gzserver.translate([]).world is None
+    (tmp_path / 'worlds').mkdir()
+    (tmp_path / 'worlds' / 'cafe.world').write_text('<sdf/>')
+    cmd = gzserver.translate(['worlds/cafe.world'],
+                             {'GAZEBO_RESOURCE_PATH': '/nowhere:%s' % tmp_path})
+    assert cmd.world == str(tmp_path / 'worlds' / 'cafe.world')
+    assert gzserver.simulator_argv(cmd, '/r')[-1] == '_world_file:=%s' % json.dumps(cmd.world)
+    assert gzserver.simulator_argv(gzserver.translate([]), '/r')[-1] == '_world_file:=""'
+
+
+def test_gzserver_says_what_it_ignores():
+    cmd = gzserver.translate(['-r', '--seed', '3', '-s', 'libgazebo_ros_api_plugin.so',
+                              '--server-plugin=libfoo.so', '--physics=bullet'])
+    assert cmd.notes == [
+        'gzserver: -r ignored: runs are not recorded (use rosbag)',
+        'gzserver: --seed 3 ignored: the simulator has no random elements to seed',
+        'gzserver: server plugin libfoo.so is not available here: ignored']
+    assert not cmd.paused and not cmd.verbose
+
+
+@pytest.mark.parametrize('argv,message', [
+    (['--fast'], "gzserver: unknown option '--fast'"),
+    (['-e', 'physx'], "gzserver: unknown physics engine 'physx'; accepted: ode, bullet, "
+                      "simbody, dart"),
+    (['-e'], 'gzserver: -e needs a value'),
+    (['/no/such.world'], "gzserver: world file '/no/such.world' not found (nor under "
+                         "GAZEBO_RESOURCE_PATH='')"),
+    (['-p', 'state.log'], 'gzserver: -p (playing a Gazebo log) is not supported'),
+    (['worlds/empty.world', 'worlds/empty.world'], 'gzserver: one world file, not 2'),
+])
+def test_gzserver_refuses_what_it_cannot_run(argv, message):
+    with pytest.raises(gzserver.UsageError) as err:
+        gzserver.translate(argv, {})
+    assert str(err.value).startswith(message)
+
+
+# spawn_model
+
+def test_spawn_model_reads_the_courses_command_line():
+    o = spawn_args.parse('-urdf -model robot -param robot_description -x -5 -y 7 -Y 3.14 '
+                         '-z 0.05'.split())
+    assert (o.format, o.source, o.source_value, o.model) == ('urdf', 'param',
+                                                              'robot_description', 'robot')
+    assert o.pose == (-5, 7, 0.05, 0, 0, 3.14)
+    assert (o.robot_namespace, o.gazebo_namespace, o.reference_frame) == (None, '/gazebo', '')
+    assert (o.timeout, o.joints, o.unpause, o.wait, o.bond) == (60.0, [], False, None, False)
+
+
+def test_spawn_model_every_option():
+    o = spawn_args.parse(['-sdf', '-file', 'm.sdf', '-model', 'm', '-J', 'joint_head', '0.5',
+                          '-J', 'arm', '-1e-3', '-reference_frame', 'table::link',
+                          '-robot_namespace', '/bot', '-gazebo_namespace', '/sim/', '-unpause',
+                          '-wait', 'table', '-timeout', '5', '-package_to_model', '-b',
+                          '-R', '0.1', '-P', '-0.2'])
+    assert (o.format, o.source, o.source_value) == ('sdf', 'file', 'm.sdf')
+    assert o.joints == [('joint_head', 0.5), ('arm', -0.001)]
+    assert (o.reference_frame, o.robot_namespace, o.gazebo_namespace) == ('table::link', '/bot',
+                                                                           '/sim')
+    assert (o.unpause, o.wait, o.timeout, o.package_to_model, o.bond) == (True, 'table', 5.0,
+                                                                          True, True)
+    assert o.pose == (0, 0, 0, 0.1, -0.2, 0)
+    assert spawn_args.parse(['-urdf', '-stdin', '-model', 'm']).source == 'stdin'
+    assert spawn_args.parse(['-sdf', '-database', 'jersey_barrier', '-model', 'm']).source_value \
+        == 'jersey_barrier'
+
+
+@pytest.mark.parametrize('argv,message', [
+    ('-model a -param p', 'spawn_model: -urdf or -sdf is required'),
+    ('-urdf -model a', 'spawn_model: -file, -param, -database or -stdin is required'),
+    ('-urdf -param p', 'spawn_model: -model NAME is required'),
+    ('-urdf -sdf -model a -param p', 'spawn_model: -urdf and -sdf cannot both be given'),
+    ('-urdf -model a -file f -param p', 'spawn_model: -file and -param cannot both be given'),
+    ('-urdf -model a -param p -x 1 -x 2', 'spawn_model: -x given twice'),
+    ('-urdf -model a -param p -x nan', "spawn_model: -x must be a finite number, not 'nan'"),
+    ('-urdf -model a -param p -Y east', "spawn_model: -Y must be a finite number, not 'east'"),
+    ('-urdf -model a -param p -J j inf', "spawn_model: -J j must be a finite number, not 'inf'"),
+    ('-urdf -model a -param p -J j', 'spawn_model: -J j needs a value'),
+    ('-urdf -model a -param', 'spawn_model: -param needs a value'),
+    ('-urdf -model a -param p -timeout -1', 'spawn_model: -timeout must be positive, not -1'),
+    ('-urdf -model a -param p -xyz 1', "spawn_model: unknown argument '-xyz'"),
+    ('-urdf -model a -param p extra', "spawn_model: unknown argument 'extra'"),
+])
+def test_spawn_model_refuses_bad_command_lines(argv, message):
+    with pytest.raises(spawn_args.UsageError) as err:
+        spawn_args.parse(argv.split())
+    assert str(err.value).startswith(message)
+
+
+def test_spawn_model_quaternion_is_tfs_quaternion_from_euler():
+    assert spawn_args.quaternion(0, 0, 0) == (0, 0, 0, 1)
+    x, y, z, w = spawn_args.quaternion(0, 0, 3.14)
+    assert (x, y) == (0, 0) and z == pytest.approx(math.sin(1.57)) and w == pytest.approx(
+        math.cos(1.57))
+    # roll then pitch then yaw about fixed axes: 90 deg roll, 90 deg yaw
+    assert spawn_args.quaternion(math.pi / 2, 0, math.pi / 2) == pytest.approx((0.5, 0.5, 0.5,
+                                                                                 0.5))
+
+
+def test_spawn_model_xml_helpers():
+    assert 'model://jersey_barrier' in spawn_args.database_xml('jersey_barrier')
+    text = '<robot name="r"><link name="l"><visual><geometry><mesh ' \
+           'filename="package://pkg/meshes/a.stl"/></geometry></visual></link></robot>'
+    assert spawn_args.checked_xml(text) == text
+    assert 'model://pkg/meshes/a.stl' in spawn_args.checked_xml(text, package_to_model=True)
+    with pytest.raises(ValueError) as err:
+        spawn_args.checked_xml('<robot>')
+    assert str(err.value).startswith('Invalid XML: no element found')
+
+
+# controller_manager spawner
+
+def test_spawner_reads_the_courses_command_line():
+    # args="--namespace=/robot joint_state_controller joint_position_controller
+    #       --shutdown-timeout 3", split by roslaunch
+    o = spawner_args.parse(['--namespace=/robot', 'joint_state_controller',
+                            'joint_position_controller', '--shutdown-timeout', '3'])
+    assert o == spawner_args.SpawnerOptions(['joint_state_controller',
+                                             'joint_position_controller'], '/robot', False, None,
+                                            30.0, 3.0)
+    o = spawner_args.parse(['--stopped', '--wait-for', 'calibrated', '--no-timeout', 'a'])
+    assert (o.stopped, o.wait_for, o.timeout, o.shutdown_timeout) == (True, 'calibrated', None,
+                                                                      2.0)
+    assert spawner_args.parse(['--timeout=5', 'a']).timeout == 5.0
+
+
+@pytest.mark.parametrize('argv,message', [
+    ([], 'spawner: name at least one controller'),
+    (['--namespace'], 'spawner: --namespace needs a value'),
+    (['--timeout', 'soon', 'a'], "spawner: --timeout must be a positive number of seconds, not "
+                                 "'soon'"),
+    (['--shutdown-timeout=-2', 'a'], 'spawner: --shutdown-timeout must be a positive number'),
+    (['--stopped=yes', 'a'], 'spawner: --stopped takes no value'),
+    (['-v', 'a'], "spawner: unknown option '-v'"),
+])
+def test_spawner_refuses_bad_command_lines(argv, message):
+    with pytest.raises(spawner_args.UsageError) as err:
+        spawner_args.parse(argv)
+    assert str(err.value).startswith(message)
+
+
+@pytest.mark.parametrize('namespace,node_ns,expected', [
+    ('/robot', '/', '/robot'), ('/robot/', '/x/', '/robot'), ('robot', '/', '/robot'),
+    ('arm', '/robot/', '/robot/arm'), ('', '/robot/', '/robot'), ('', '/', '/'),
+])
+def test_spawner_finds_the_controller_manager_as_rospy_resolves_names(namespace, node_ns,
+                                                                      expected):
+    assert spawner_args.manager_namespace(namespace, node_ns) == expected
+
+
+def test_spawner_service_names():
+    assert spawner_args.service_names('/robot') == (
+        '/robot/controller_manager/load_controller', '/robot/controller_manager/switch_controller',
+        '/robot/controller_manager/unload_controller')
+    assert spawner_args.service_names('/')[0] == '/controller_manager/load_controller'
+
+
+# xacro
+
+def test_xacro_drops_inorder_only():
+    assert xacro_argv(['--inorder', 'a.xacro', 'ns:=x', '-o', 'out']) == ['a.xacro', 'ns:=x',
+                                                                          '-o', 'out']
+    assert xacro_argv(['-i', 'a.xacro']) == ['a.xacro']
+
+
+def test_xacro_runs_the_students_robot_with_find_resolved(tmp_path):
+    """Runs the stand-in executable as roslaunch's command= runs it; needs PyPI's
+    xacro, which tools/run original-env installs."""
+    check = subprocess.run(['/usr/bin/python3', '-c', 'import xacro'], stderr=subprocess.PIPE)
+    if check.returncode != 0:
+        pytest.skip('xacro not installed for /usr/bin/python3 (tools/run original-env '
+                    'installs it)')
+    # the fixture is a package named exp_assignment2: $(find exp_assignment2) must give it
+    # (alone on the path: test/fixtures may hold other packages of that name)
+    os.symlink(STUDENT, str(tmp_path / 'exp_assignment2'))
+    env = dict(os.environ, ROS_PACKAGE_PATH=str(tmp_path), EXP2_REPO=REPO)
+    proc = subprocess.run(['/usr/bin/python3', os.path.join(PACKAGES, 'xacro', 'xacro'),
+                           '--inorder',
+                           os.path.join(STUDENT, 'urdf', 'robot.xacro')], env=env,
+                          stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                          universal_newlines=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stderr == ''            # no deprecation warning for --inorder
+    urdf = proc.stdout
+    assert 'libgazebo_ros_diff_drive.so' in urdf and 'libgazebo_ros_control.so' in urdf
+    assert '<width>320</width>' in urdf and '<update_rate>15' in urdf
+    assert '${' not in urdf and 'xacro:' not in urdf.replace('xmlns:xacro', '')
+
+
+# the viewer
+
+def test_viewer_frames_and_display():
+    def pose(x, w=1.0):
+        return SimpleNamespace(position=SimpleNamespace(x=x, y=0.0, z=0.0),
+                               orientation=SimpleNamespace(x=0.0, y=0.0, z=0.0, w=w))
+    out = viewer.frames(['robot', 'robot::link_chassis', '', 'bad'],
+                        [pose(1), pose(2), pose(3), pose(float('nan'))])
+    assert [f for f, _ in out] == ['gazebo/robot', 'gazebo/robot/link_chassis']
+    assert viewer.display_of({}) is None and viewer.display_of({'DISPLAY': ':1'}) == ':1'
+    assert viewer.display_of({'WAYLAND_DISPLAY': 'wayland-0'}) == 'wayland-0'
+
+
+def test_the_packages_are_installed_executable_once_per_content(tmp_path):
+    source = tmp_path / 'source'
+    shutil.copytree(PACKAGES, str(source))
+    ws = tmp_path / 'ws'
+    first = launch_packages.install(str(ws), str(source))
+    assert first.startswith(str(ws / 'original_env_packages'))
+    for path in launch_packages.EXECUTABLES + ('xacro/xacro.py',):
+        assert os.access(os.path.join(first, path), os.X_OK), path
+    assert os.path.isfile(os.path.join(first, 'gazebo_ros', 'launch', 'empty_world.launch'))
+    assert launch_packages.install(str(ws), str(source)) == first
+    (source / 'xacro' / 'xacro').write_text('#!/usr/bin/python3\n')
+    second = launch_packages.install(str(ws), str(source))
+    assert second != first and os.path.isdir(first)     # a running shell keeps its copy
+    assert sorted(os.listdir(str(ws / 'original_env_packages'))) == sorted(
+        [os.path.basename(first), os.path.basename(second)])    # no scratch left behind

@@ -1,0 +1,76 @@
+"""Put the launch-surface packages (packages/: gazebo_ros, xacro,
+controller_manager) where roslaunch can run them, and print that directory.
+
+    /usr/bin/python3 launch_packages.py WORKSPACE   -> WORKSPACE/original_env_packages/<hash>
+
+roslaunch runs a node's ``type`` and a ``command=`` only if the file is
+executable; in the repository these files are not (catkin_lint would want
+every executable file of exp_assignment2 installed). So shell.sh has them
+copied into the workspace with their executable bits, ``xacro/xacro.py``
+(old launch files' name) beside ``xacro/xacro``. One directory per content
+hash, filled under a temporary name and renamed into place: shells that
+start at the same time, or run while another one changes the files, never
+see a half-made copy.
+"""
+import hashlib
+import os
+import shutil
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PACKAGES = os.path.join(HERE, 'packages')
+EXECUTABLES = ('gazebo_ros/scripts/gzserver', 'gazebo_ros/scripts/debug',
+               'gazebo_ros/scripts/gzclient', 'gazebo_ros/scripts/spawn_model',
+               'controller_manager/scripts/spawner', 'xacro/xacro')
+ALIASES = {'xacro/xacro.py': 'xacro/xacro'}
+
+
+def digest(source=PACKAGES):
+    """A hash of every file's path and content under ``source``."""
+    h = hashlib.sha1()
+    for root, dirs, files in os.walk(source):
+        dirs.sort()
+        for name in sorted(files):
+            path = os.path.join(root, name)
+            h.update(os.path.relpath(path, source).encode() + b'\0')
+            with open(path, 'rb') as f:
+                h.update(f.read() + b'\0')
+    return h.hexdigest()[:16]
+
+
+def install(workspace, source=PACKAGES):
+    """The directory holding the packages, executable, made if needed."""
+    parent = os.path.join(workspace, 'original_env_packages')
+    target = os.path.join(parent, digest(source))
+    if os.path.isdir(target):
+        return target
+    os.makedirs(parent, exist_ok=True)
+    scratch = tempfile.mkdtemp(prefix='.new-', dir=parent)
+    try:
+        made = os.path.join(scratch, 'packages')
+        shutil.copytree(source, made)
+        for alias, original in ALIASES.items():
+            shutil.copy(os.path.join(made, original), os.path.join(made, alias))
+        for path in EXECUTABLES + tuple(ALIASES):
+            os.chmod(os.path.join(made, path), 0o755)
+        try:
+            os.rename(made, target)
+        except OSError:
+            if not os.path.isdir(target):     # not made by a shell that started with us
+                raise
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+    return target
+
+
+def main(argv):
+    if len(argv) != 1:
+        print('usage: launch_packages.py WORKSPACE', file=sys.stderr)
+        return 2
+    print(install(argv[0]))
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv[1:]))
