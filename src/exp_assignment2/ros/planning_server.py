@@ -2,13 +2,14 @@
 
 One control step per odometry message (an event, not a timer); a wait for
 the next one also ends on preemption or shutdown, and on ``odom_timeout`` s of
-silence. Goals are checked by :func:`exp_assignment2.planning.goal_error`
-(refusals logged through a throttled :class:`~exp_assignment2.refusal.RefusalLog`),
-aborted with the reason as the status text.
+silence (of the node's clock, which a jump of ROS time does not move). Goals
+are checked by :func:`exp_assignment2.planning.goal_error` before they are
+accepted: a refused goal is REJECTED with the reason as the status text and
+one line (throttled by a :class:`~exp_assignment2.refusal.RefusalLog`), and
+the goal under way goes on (:mod:`exp_assignment2.ros.action_server`).
 """
 import threading
 
-import actionlib
 import rospy
 from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
@@ -17,6 +18,7 @@ from std_msgs.msg import Float64
 from exp_assignment2.geometry import yaw_of
 from exp_assignment2.msg import PlanningAction, PlanningFeedback, PlanningResult
 from exp_assignment2.planning import REACHED, goal_error
+from exp_assignment2.ros.action_server import CheckedActionServer
 from exp_assignment2.ros.log import refusal_log
 
 
@@ -50,9 +52,8 @@ class PlanningServer(object):
         self.odom_timeout = float(rospy.get_param('~odom_timeout', 2.0))
         self.odom, self.odom_topic = OdomWatch(odom_topic, clock), odom_topic
         self.cmd_pub = rospy.Publisher(cmd_topic, Twist, queue_size=1)
-        self.refuse = refusal_log(name)
-        self.server = actionlib.SimpleActionServer(name, PlanningAction, self.execute,
-                                                   auto_start=False)
+        self.server = CheckedActionServer(name, PlanningAction, self.execute, self.goal_error,
+                                          refusal_log(name), refusal_log(name + '/cancel'))
         self.server.register_preempt_callback(clock.notify)
         self.server.start()
         rospy.loginfo('%s: ready', name)
@@ -68,13 +69,13 @@ class PlanningServer(object):
         log('%s: aborted: %s', self.name, text)
         self.server.set_aborted(PlanningResult(), text)
 
+    def goal_error(self, goal):
+        """Why ``goal`` is refused, or None."""
+        target = goal.target_pose.pose.position
+        return goal_error(target.x, target.y, target.z if self.uses_z else None)
+
     def execute(self, goal):
         target = goal.target_pose.pose.position
-        error = goal_error(target.x, target.y, target.z if self.uses_z else None)
-        if error:
-            self.refuse('rejected: %s' % error)
-            self.server.set_aborted(PlanningResult(), error)
-            return
         if not self.clock.wait_until(lambda: self.odom.latest()[0] is not None, 10.0):
             self._abort('no odometry on %s' % self.odom_topic, rospy.logerr)
             return
