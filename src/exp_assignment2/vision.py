@@ -24,8 +24,14 @@ Ball.__doc__ = """A detected ball: enclosing circle (x, y, radius) and centroid 
 
 
 def decode_jpeg(data):
-    """BGR image from JPEG bytes (a CompressedImage's data), or None."""
-    return cv2.imdecode(np.frombuffer(data, np.uint8), cv2.IMREAD_COLOR)
+    """BGR image from JPEG bytes (a CompressedImage's data), or None when they
+    are not an image (empty, truncated, garbage)."""
+    if not data:
+        return None        # cv2.imdecode raises on an empty buffer
+    try:
+        return cv2.imdecode(np.frombuffer(data, np.uint8), cv2.IMREAD_COLOR)
+    except (cv2.error, TypeError, ValueError):
+        return None
 
 
 def encode_jpeg(bgr, quality=80):

@@ -72,3 +72,16 @@ def test_detection_survives_jpeg_and_annotation_draws():
     assert abs(ball.x - 200) <= 2 and abs(ball.y - 150) <= 2
     out = annotate(decoded.copy(), ball)
     assert (out != decoded).any()
+
+
+@pytest.mark.parametrize('data', [b'', b'\x00', b'not a jpeg at all', bytes(range(256)) * 4,
+                                  b'\xff\xd8\xff\xe0' + b'\x00' * 60])
+def test_a_frame_that_is_not_a_jpeg_image_decodes_to_none(data):
+    assert decode_jpeg(data) is None
+
+
+def test_a_truncated_jpeg_is_not_an_image_or_is_a_whole_one():
+    img = np.zeros((64, 64, 3), np.uint8)
+    data = encode_jpeg(img, 80)
+    decoded = decode_jpeg(data[:len(data) // 2])
+    assert decoded is None or decoded.shape == (64, 64, 3)

@@ -13,7 +13,7 @@ from geometry_msgs.msg import Twist
 from sensor_msgs.msg import CompressedImage
 from std_msgs.msg import Float64
 
-from exp_assignment2.ros.frames import decode_frame
+from exp_assignment2.ros.frames import FrameDecoder
 from exp_assignment2.vision import BallDetector, annotate, encode_jpeg
 
 CAMERA_TOPIC = '/robot/camera1/image_raw/compressed'
@@ -105,6 +105,7 @@ class RosDogEyes(object):
         self.seen, self.servo = None, None
         self.window = ImageWindow() if gui else None
         self.output_pub = rospy.Publisher(OUTPUT_TOPIC, CompressedImage, queue_size=1)
+        self.decode = FrameDecoder(CAMERA_TOPIC)
         rospy.Subscriber(CAMERA_TOPIC, CompressedImage, self._on_image, queue_size=1,
                          buff_size=2 ** 24)
 
@@ -115,7 +116,7 @@ class RosDogEyes(object):
         self.servo = servo
 
     def _on_image(self, msg):
-        bgr = decode_frame(msg, 'camera')
+        bgr = self.decode(msg)
         if bgr is None:
             return
         ball = self.detector.detect(bgr)
