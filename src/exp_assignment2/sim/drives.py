@@ -11,6 +11,7 @@ import math
 from exp_assignment2.sim.bullet import p
 
 from exp_assignment2.geometry import all_finite, cap_norm, clamp
+from exp_assignment2.grammar import show_number, show_numbers
 from exp_assignment2.sim import urdf
 
 
@@ -30,7 +31,7 @@ class VelocityDrive(object):
     def command(self, vx, vy, wz):
         """Take a velocity command; True when it had to be clamped to the limits."""
         if not all_finite(vx, vy, wz):
-            raise ValueError('velocity command (%r, %r, %r) is not finite' % (vx, vy, wz))
+            raise ValueError('velocity command %s is not finite' % show_numbers((vx, vy, wz)))
         vx, vy, wz = float(vx), float(vy), float(wz)
         over = (math.hypot(vx, vy) > self.max_linear * (1 + 1e-6)
                 or abs(wz) > self.max_angular * (1 + 1e-6))
@@ -165,7 +166,7 @@ class JointPosition(object):
     def command(self, angle):
         """Set the target angle; returns the clamped target."""
         if not all_finite(angle):
-            raise ValueError('joint position command %r is not finite' % (angle,))
+            raise ValueError('joint position command %s is not finite' % show_number(angle))
         self.target = min(max(float(angle), self.lower), self.upper)
         self.dirty = True
         return self.target
@@ -195,7 +196,7 @@ class Height(object):
     def command(self, z):
         """Set the height; returns the height used (at most max_z)."""
         if not all_finite(z):
-            raise ValueError('height command %r is not finite' % (z,))
+            raise ValueError('height command %s is not finite' % show_number(z))
         z = min(float(z), self.max_z)
         self.body.kinematic[2] = z
         self.body.hidden = z < 0.0

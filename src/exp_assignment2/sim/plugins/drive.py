@@ -2,6 +2,7 @@
 import rospy
 from geometry_msgs.msg import Twist
 
+from exp_assignment2.grammar import show_numbers
 from exp_assignment2.refusal import RefusalLog
 from exp_assignment2.sim.drives import DiffDrive, PlanarMove
 
@@ -30,8 +31,8 @@ class DrivePlugin(object):
             self.ignored('ignored: %s' % exc)
             return
         if clamped:
-            self.clamped('(%.3g, %.3g, %.3g) clamped to the limits, %s'
-                         % (tuple(values) + (self.drive.limits,)))
+            self.clamped('%s clamped to the limits, %s'
+                         % (show_numbers(values), self.drive.limits))
 
     def before_step(self):
         self.drive.apply()

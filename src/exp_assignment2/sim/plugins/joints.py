@@ -4,6 +4,7 @@ import rospy
 from sensor_msgs.msg import JointState
 from std_msgs.msg import Float64, Header
 
+from exp_assignment2.grammar import show_number
 from exp_assignment2.refusal import RefusalLog
 from exp_assignment2.sim.drives import Height, JointPosition
 
@@ -30,7 +31,7 @@ class CommandPlugin(object):
             self.ignored('ignored: %s' % exc)
             return
         if used != value:
-            self.clamped('%.3g clamped to %.3g' % (value, used))
+            self.clamped('%s clamped to %s' % (show_number(value), show_number(used)))
 
     def before_step(self):
         self.controller.apply()
