@@ -32,7 +32,7 @@ class CommandPublisher(object):
         self.pub = rospy.Publisher(topic, Twist, queue_size=1)
         self.held, self.last = None, 0.0
         self.lock = threading.Lock()
-        rospy.Timer(rospy.Duration(HOLD_PERIOD), self._hold)
+        rospy.Timer(rospy.Duration(HOLD_PERIOD), self._hold, reset=True)  # survives time going back
 
     def drive(self, linear, angular):
         with self.lock:
@@ -55,7 +55,8 @@ class CommandPublisher(object):
     def _hold(self, _event):
         with self.lock:
             held = self.held
-        if held is not None and rospy.get_time() - self.last >= HOLD_PERIOD * 0.9:
+        since = rospy.get_time() - self.last
+        if held is not None and not 0.0 <= since < HOLD_PERIOD * 0.9:   # < 0: time went back
             self._publish(*held)
 
 
@@ -121,7 +122,7 @@ class RosDogEyes(object):
             return
         ball = self.detector.detect(bgr)
         if ball is not None:
-            self.seen = msg.header.stamp.to_sec()
+            self.seen = self.clock.from_source(msg.header.stamp.to_sec())
         servo = self.servo
         if servo is not None:
             servo(ball, bgr.shape[1])
