@@ -9,6 +9,7 @@ from std_msgs.msg import Float64MultiArray, Int64MultiArray, String
 
 from exp_assignment2.behaviour.miro import STATE_PARAM
 from exp_assignment2.grammar import CommandError, parse_motion_command, quote
+from exp_assignment2.ros.clock import RosClock
 
 
 def on_command(msg):
@@ -32,6 +33,8 @@ def on_arrival(msg):
 
 def main():
     rospy.init_node('print_info')
+    if not RosClock().wait_for_time():      # a respawned node's lines carry ROS time
+        return
     rospy.Subscriber('/state', String, on_state, queue_size=100)
     rospy.Subscriber('/command', String, on_command, queue_size=100)
     rospy.Subscriber('/target_pos', Int64MultiArray, lambda m: rospy.loginfo(
