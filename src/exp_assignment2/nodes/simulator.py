@@ -19,6 +19,7 @@ from rosgraph_msgs.msg import Clock
 from std_srvs.srv import Empty, EmptyResponse
 
 from exp_assignment2.ros.clock_watch import watch_clock
+from exp_assignment2.sim.limits import check_node_params
 from exp_assignment2.sim.pacing import Pacer
 from exp_assignment2.sim.physics import Physics
 from exp_assignment2.sim.plugins import load_plugins
@@ -35,7 +36,8 @@ class Simulator(object):
     """Owns the physics, the plugins and the stepping loop."""
 
     def __init__(self, params):
-        self.params = dict(NODE_PARAMS, **{k: v for k, v in params.items() if k in NODE_PARAMS})
+        self.params = check_node_params(     # one line naming a refused parameter
+            dict(NODE_PARAMS, **{k: v for k, v in params.items() if k in NODE_PARAMS}))
         self.world = parse_world({k: v for k, v in params.items() if k not in NODE_PARAMS})
         self._apply_overrides()
         self.renderer_kind = str(self.params['renderer'])
