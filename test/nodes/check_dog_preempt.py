@@ -20,7 +20,7 @@ class TestDogPreempt(DogCheck):
         cls.results = Watch('/robot_reaching_goal/result', PlanningActionResult, keep=True)
 
     def test_ball_seen_preempts_the_robot_goal(self):
-        self.assertTrue(wait_until(lambda: self.goals.msg is not None, 60.0),
+        self.assertTrue(wait_until(lambda: self.goals.msg is not None, 90.0),
                         'the dog never wandered')
         self.assertNotIn('PLAY', [s for _, s in self.dog.states])
         clock().sleep(1.0)
@@ -29,13 +29,13 @@ class TestDogPreempt(DogCheck):
                  max(-7.5, min(7.5, y + 3.0 * math.sin(yaw))))
         active = self.goals.msg.goal_id.id
         self.tell_the_ball('go to %.2f %.2f' % ahead)
-        self.assertTrue(wait_until(lambda: self.dog.state() == 'PLAY', 40.0),
+        self.assertTrue(wait_until(lambda: self.dog.entered('PLAY'), 60.0),
                         'states: %s' % self.dog.states)
 
         def preempted():
             return [r for r in self.results.all if r.status.goal_id.id == active
                     and r.status.status == GoalStatus.PREEMPTED]
-        self.assertTrue(wait_until(preempted, 5.0), 'results: %s' % [
+        self.assertTrue(wait_until(preempted, 10.0), 'results: %s' % [
             (r.status.goal_id.id, r.status.status) for r in self.results.all])
 
 
