@@ -29,6 +29,7 @@ from exp_assignment2.grammar import quote
 
 CANCEL_USAGE = 'accepted: the id of a goal this server holds, or an empty id (every goal)'
 FUTURE = rospy.Duration(1.0)     # a goal stamped this far ahead was stamped before a jump
+STATUS_TIMER_JOIN = 2.0          # wall s at most (a paused simulator holds ROS time)
 
 
 class CheckedActionServer(actionlib.SimpleActionServer):
@@ -50,6 +51,8 @@ class CheckedActionServer(actionlib.SimpleActionServer):
         server = self.action_server
         if server.status_timer is not None:     # actionlib's dies when time goes back
             server.status_timer.shutdown()
+            # it ends after its current period (0.2 s of ROS time): gone before any jump
+            server.status_timer.join(STATUS_TIMER_JOIN)
             server.status_timer = rospy.Timer(rospy.Duration(1.0 / server.status_frequency),
                                               server.publish_status_async, reset=True)
 
