@@ -53,6 +53,7 @@ def test_a_bad_argument_stops_the_launch_with_one_line(arg, line, tmp_path):
     took = time.monotonic() - start
     naming = [l for l in proc.stdout.splitlines() if line in l]
     assert proc.returncode != 0, proc.stdout[-3000:]
-    assert took < 30.0, 'the launch took %.0f s to stop' % took
+    # a few seconds on an idle machine (8 s measured); a loaded one needs margin
+    assert took < 60.0, 'the launch took %.0f s to stop' % took
     assert len(naming) == 1, proc.stdout[-3000:]
     assert 'Traceback' not in proc.stdout

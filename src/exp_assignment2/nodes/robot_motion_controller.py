@@ -2,14 +2,11 @@
 ``/target_pos``; parameters ``~kp``, ``~max_speed``, ``~tolerance``, ``~rate``."""
 import rospy
 
-from exp_assignment2.ros.clock import RosClock
 from exp_assignment2.ros.miro import OmniMotionController
 
 
 def main():
     rospy.init_node('robot_motion_controller')
-    if not RosClock().wait_for_time():      # a respawned node's lines carry ROS time
-        return
     OmniMotionController(kp=float(rospy.get_param('~kp', 1.0)),
                          max_speed=float(rospy.get_param('~max_speed', 1.0)),
                          tolerance=float(rospy.get_param('~tolerance', 0.05)),
