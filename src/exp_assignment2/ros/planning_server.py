@@ -25,6 +25,8 @@ from exp_assignment2.refusal import RefusalLog
 from exp_assignment2.ros.action_server import CheckedActionServer
 from exp_assignment2.ros.log import refusal_log
 
+HEIGHT_TIMEOUT = 10.0   # s of ROS time for the ball to take the goal's height
+
 
 class OdomWatch(object):
     """The latest pose of an Odometry topic; each message notifies the clock."""
@@ -165,9 +167,10 @@ class BallPlanningServer(PlanningServer):
 
     def begin(self, target):
         self.height_pub.publish(Float64(target.z))
+        # one physics step does it; 10 s of ROS time leave room for a starved node
         at_height = self.clock.wait_until(
             lambda: abs(self.odom.latest()[0].position.z - target.z) < 1e-3
-            or self.server.is_preempt_requested(), 2.0)
+            or self.server.is_preempt_requested(), HEIGHT_TIMEOUT)
         if not at_height and not self.server.is_preempt_requested():
             self._abort('the ball did not reach height %.2f' % target.z, rospy.logerr)
             return False
