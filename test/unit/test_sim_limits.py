@@ -22,6 +22,9 @@ def test_what_the_launch_files_pass_is_accepted():
     assert check() == dict(LAUNCH, camera_rate=30.0, camera_hfov=80.0)
     assert check(camera_width=None, camera_height=None, camera_rate=None, camera_hfov=None,
                  cmd_timeout=None)['camera_width'] is None
+    assert check(camera_width='', camera_height='', camera_rate='')['camera_width'] == ''
+    assert check(robot_ns='robot2')['robot_ns'] == 'robot2', 'other keys pass through'
+
 
 
 @pytest.mark.parametrize('name,value,shown', [

@@ -78,10 +78,16 @@ def _size(params, name, max_size):
     return int(x)
 
 
+def _given(value):
+    """A launch argument left empty ('') or a parameter not set (None) is not given."""
+    return value is not None and value != ''
+
+
 def check_node_params(params, max_size=gl_max_image_size):
     """The simulator node's ``params`` (``real_time_factor``, ``time_step``,
     ``renderer``, ``paused``, ``wait_for_camera``, ``cmd_timeout``,
-    ``start_timeout``, ``camera_*``; None: not given), checked and normalised.
+    ``start_timeout``, ``camera_*``; None or '': not given), checked and
+    normalised; other keys are passed through.
 
     :param max_size: ``max_size()`` is the largest image side the renderer
         draws, or None (asked only when a camera size is given, at most once)
@@ -105,18 +111,18 @@ def check_node_params(params, max_size=gl_max_image_size):
             _refuse(name, params[name], 'true or false')
     out['start_timeout'] = _real(params, 'start_timeout', 0.0, math.inf, 'seconds > 0',
                                  low_open=True)
-    if params['cmd_timeout'] is not None:
+    if _given(params['cmd_timeout']):
         out['cmd_timeout'] = _real(params, 'cmd_timeout', 0.0, math.inf,
                                    'seconds >= 0 (0: keep the last command)')
     for name in ('camera_width', 'camera_height'):
-        if params[name] is not None:
+        if _given(params[name]):
             out[name] = _size(params, name, largest)
-    if params['camera_rate'] is not None:
+    if _given(params['camera_rate']):
         most = 1.0 / out['time_step']
         out['camera_rate'] = _real(params, 'camera_rate', 0.0, most,
                                    'frames per second in (0, %g] (one per time step at most)'
                                    % most, low_open=True)
-    if params['camera_hfov'] is not None:
+    if _given(params['camera_hfov']):
         out['camera_hfov'] = _real(params, 'camera_hfov', 1.0, 179.0,
                                    'degrees in [1, 179]')
     return out
