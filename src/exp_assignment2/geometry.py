@@ -38,3 +38,11 @@ def cap_norm(vx, vy, limit):
         scale = limit / speed        # vx * limit could overflow for vx near 1e308
         return vx * scale, vy * scale
     return vx, vy
+
+
+def world_to_body(vx, vy, yaw):
+    """A velocity (vx, vy) in the world frame, in the frame of a body whose
+    heading is ``yaw``: what a planar drive that reads x, y in the body frame
+    (Gazebo's planar_move) needs to move the body along (vx, vy)."""
+    c, s = math.cos(yaw), math.sin(yaw)
+    return c * vx + s * vy, -s * vx + c * vy

@@ -48,6 +48,20 @@ def quote(text, limit=QUOTE_LIMIT):
     return shown
 
 
+def show_number(value):
+    """A number as every refusal prints it: at most 10 significant digits,
+    exponents for the huge and tiny (1e+308, -0, nan, -inf, 2.5)."""
+    try:
+        return '%.10g' % value
+    except TypeError:
+        return quote(value)
+
+
+def show_numbers(values):
+    """Numbers as a tuple, ``(x, y, z)``, each as :func:`show_number` prints it."""
+    return '(%s)' % ', '.join(show_number(v) for v in values)
+
+
 def _words(text, usage):
     if not isinstance(text, str):
         raise CommandError('not text: %s; %s' % (quote(text), usage))

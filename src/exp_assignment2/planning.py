@@ -10,6 +10,7 @@ import math
 
 from exp_assignment2 import arena
 from exp_assignment2.control import DONE, FIX_YAW, GO_STRAIGHT, planar_velocity
+from exp_assignment2.grammar import show_number, show_numbers
 
 FIXING_YAW = 'Fixing the yaw'
 ANGLE_ALIGNED = 'Angle aligned'
@@ -20,19 +21,21 @@ REACHED = 'Target reached!'
 def goal_error(x, y, z=None):
     """Why a goal at (x, y[, z]) cannot be executed, or None when it can.
 
-    Pass ``z`` only where it is used (the ball's height)."""
+    Pass ``z`` only where it is used (the ball's height). Numbers are printed
+    by :func:`~exp_assignment2.grammar.show_number` (1e+308, not 309 digits)."""
     try:
         if not (math.isfinite(x) and math.isfinite(y)):
-            return 'goal x, y = (%r, %r) is not finite' % (x, y)
+            return 'goal x, y = %s is not finite' % show_numbers((x, y))
         if z is not None and not math.isfinite(z):
-            return 'goal z = %r (the ball\'s height) is not finite' % (z,)
+            return 'goal z = %s (the ball\'s height) is not finite' % show_number(z)
     except TypeError:
         return 'goal position is not numeric'
     if not arena.in_arena(x, y):
-        return ('goal (%.2f, %.2f) is outside the arena: x and y must be in [-%g, %g]'
-                % (x, y, arena.GOAL_LIMIT, arena.GOAL_LIMIT))
+        return ('goal x, y = %s is outside the arena: x and y must be in [-%g, %g]'
+                % (show_numbers((x, y)), arena.GOAL_LIMIT, arena.GOAL_LIMIT))
     if z is not None and z > arena.BALL_MAX_Z:
-        return 'goal z = %.2f is above the %g m the ball may rise to' % (z, arena.BALL_MAX_Z)
+        return ('goal z = %s is above the %g m the ball may rise to'
+                % (show_number(z), arena.BALL_MAX_Z))
     return None
 
 

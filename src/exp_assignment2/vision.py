@@ -36,10 +36,14 @@ DECODE_FLAGS = {1: cv2.IMREAD_COLOR, 2: cv2.IMREAD_REDUCED_COLOR_2,
 
 def decode_jpeg(data, scale=1):
     """BGR image from JPEG bytes (a CompressedImage's data), at 1/``scale``
-    of its size (1, 2, 4 or 8), or None when it is not a JPEG image."""
+    of its size (1, 2, 4 or 8), or None when they are not an image (empty,
+    truncated, garbage)."""
     if not len(data):
-        return None              # OpenCV asserts on an empty buffer
-    return cv2.imdecode(np.frombuffer(data, np.uint8), DECODE_FLAGS[scale])
+        return None              # cv2.imdecode raises on an empty buffer
+    try:
+        return cv2.imdecode(np.frombuffer(data, np.uint8), DECODE_FLAGS[scale])
+    except (cv2.error, TypeError, ValueError):
+        return None
 
 
 def vision_scale(width, least=400):

@@ -9,7 +9,7 @@ import unittest
 
 import rospy
 import rostest
-from std_msgs.msg import Float64MultiArray, String
+from std_msgs.msg import Float64MultiArray, Int64MultiArray, String
 from std_srvs.srv import Empty
 from visualization_msgs.msg import MarkerArray
 
@@ -27,6 +27,7 @@ class TestMiro(unittest.TestCase):
         cls.states = Watch('/state', String, keep=True)
         cls.commands = Watch('/command', String, keep=True)
         cls.arrivals = Watch('/arrival', Float64MultiArray, keep=True)
+        cls.targets = Watch('/target_pos', Int64MultiArray, keep=True)
         cls.odom = Pose('/odom')
         cls.rosout = Rosout()
         cls.voice = rospy.Publisher('/voice', String, queue_size=10)
@@ -59,15 +60,33 @@ class TestMiro(unittest.TestCase):
                          'PLAY %.1f s after waking' % (rospy.get_time() - woke))
 
     def test_2_a_call_mid_wander_starts_play_within_1s(self):
-        self.assertTrue(wait_until(lambda: self.commands.msg.data == 'go_rand', 20.0))
+        seen = len(self.targets.all)
+
+        def long_wander():
+            """A random point at least 2 m from MiRo (it may draw its own)."""
+            x, y, _, _ = self.odom.xyzyaw()
+            return [t.data for t in self.targets.all[seen:] if t.layout.dim
+                    and t.layout.dim[0].label == 'go_rand'
+                    and math.hypot(t.data[0] - x, t.data[1] - y) >= 2.0]
+        self.assertTrue(wait_until(long_wander, 60.0), 'no wander of 2 m or more')
         arrivals = self.arrivals.count
         clock().sleep(0.5)                                     # on its way
         self.assertEqual(self.arrivals.count, arrivals, 'the wander was too short')
-        said = rospy.get_time()
         self.say('hey buddy')
-        self.assertTrue(wait_until(lambda: self.state() == 'PLAY STATE', 1.0),
-                        'state %r %.2f s after the call' % (self.state(),
-                                                           rospy.get_time() - said))
+        self.assertTrue(wait_until(lambda: self.state() == 'PLAY STATE', 10.0),
+                        'state %r' % self.state())
+        # within 1 s of simulated time, by the state manager's own stamps
+        def stamps():
+            heard = self.rosout.lines("the person says 'hey buddy'", node='/state_manager')
+            left = self.rosout.lines('called while wandering', node='/state_manager')
+            return heard and left and (heard[-1].header.stamp.to_sec(),
+                                       left[-1].header.stamp.to_sec())
+        self.assertTrue(wait_until(stamps, 10.0),
+                        'lines: %s' % [m.msg for m in self.rosout.all[-10:]])
+        heard, left = stamps()
+        took = left - heard
+        rospy.loginfo('PLAY %.2f s of simulated time after the call', took)
+        self.assertTrue(0.0 <= took <= 1.0, took)
 
     def test_3_with_no_gesture_ever_play_goes_to_5_5_and_an_order_on_the_way_is_obeyed(self):
         self.assertTrue(wait_until(lambda: self.commands.msg.data == 'go to 5 5', 5.0))
@@ -81,11 +100,12 @@ class TestMiro(unittest.TestCase):
                         'arrivals: %s' % [a.data for a in self.arrivals.all[before:]])
 
     def test_4_with_silence_miro_goes_where_the_person_points(self):
-        before = len(self.arrivals.all)
+        before, states = len(self.arrivals.all), len(self.states.all)
         self.assertTrue(wait_until(lambda: self.arrived_at(4, 4, before), 30.0))
         self.assertTrue(wait_until(lambda: self.arrived_at(8, 2, before), 30.0),
                         'arrivals: %s' % [a.data for a in self.arrivals.all[before:]])
-        self.assertTrue(wait_until(lambda: self.state() == 'NORMAL', 10.0))
+        self.assertTrue(wait_until(lambda: 'NORMAL' in [m.data for m in self.states.all[states:]],
+                                   20.0))
 
     def test_5_rviz_shows_the_grid_home_and_the_person_where_the_gesture_put_them(self):
         markers = Watch('/gazebo/world_markers', MarkerArray)

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The project's two PlanningAction servers through real actionlib clients:
 the original's feedback wording, results, preemption, the ball's height from
-the goal's z, and bad goals refused with one line on /rosout each."""
+the goal's z, bad goals REJECTED with one line on /rosout each and without
+touching the goal under way, and a flood of cancels of an unknown goal."""
 import math
 import time
 import unittest
@@ -9,10 +10,10 @@ import unittest
 import actionlib
 import rospy
 import rostest
-from actionlib_msgs.msg import GoalStatus
+from actionlib_msgs.msg import GoalID, GoalStatus
 from rosgraph_msgs.msg import Log
 
-from checks import Pose, Rosout, clock, wait_until
+from checks import Pose, Rosout, clock, wait_for_subscribers, wait_until
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 
@@ -76,10 +77,39 @@ class TestPlanningAction(unittest.TestCase):
                  (self.ball, make_goal(1.0, 1.0, 80.0), 'may rise to')]
         for client, goal, why in cases:
             state, _ = self.run_goal(client, goal, 10.0)
-            self.assertEqual(state, GoalStatus.ABORTED, why)
+            self.assertEqual(state, GoalStatus.REJECTED, why)
             self.assertIn(why, client.get_goal_status_text())
             self.assertTrue(wait_until(lambda: self.rosout.lines(why, Log.ERROR), 5.0), why)
             time.sleep(1.1)          # refusals are throttled to one line a wall second
+
+    def test_a_refused_goal_leaves_the_goal_under_way_alone(self):
+        second = actionlib.SimpleActionClient('/robot_reaching_goal', PlanningAction)
+        self.assertTrue(second.wait_for_server(rospy.Duration(30)))
+        self.robot.send_goal(make_goal(-5.0, 3.0))
+        clock().sleep(3.0)
+        second.send_goal(make_goal(float('nan'), 0.0))
+        self.assertTrue(second.wait_for_result(rospy.Duration(10)))
+        self.assertEqual(second.get_state(), GoalStatus.REJECTED)
+        self.assertIn('not finite', second.get_goal_status_text())
+        self.assertTrue(self.robot.wait_for_result(rospy.Duration(120)))
+        self.assertEqual(self.robot.get_state(), GoalStatus.SUCCEEDED,
+                         self.robot.get_goal_status_text())
+
+    def test_fifty_cancels_of_an_unknown_goal_make_at_most_two_lines(self):
+        cancel = rospy.Publisher('/reaching_goal/cancel', GoalID, queue_size=100)
+        wait_for_subscribers(cancel)
+        self.ball.send_goal(make_goal(-6.0, -6.0, 0.5))
+        clock().sleep(0.5)
+        before = len(self.rosout.lines(node='/go_to_point_ball'))
+        for _ in range(50):
+            cancel.publish(GoalID(id='no-such-goal'))
+        self.assertTrue(self.ball.wait_for_result(rospy.Duration(60)))
+        self.assertEqual(self.ball.get_state(), GoalStatus.SUCCEEDED)
+        time.sleep(2.5)          # the count of the held-back refusals comes a second later
+        lines = [m.msg for m in self.rosout.lines(node='/go_to_point_ball')[before:]]
+        rospy.loginfo('50 cancels of an unknown goal: %d lines: %s', len(lines), lines)
+        self.assertTrue(1 <= len(lines) <= 2, lines)
+        self.assertTrue(all(line.startswith('/reaching_goal/cancel: ') for line in lines), lines)
 
     def test_what_is_ignored_is_ignored_whatever_its_value(self):
         goal = make_goal(-4.0, 6.0, float('nan'))      # z is not used by the robot server

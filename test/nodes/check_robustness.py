@@ -15,8 +15,7 @@ from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import Twist
 from std_msgs.msg import String
 
-from checks import DogObserver, Rosout, clock, kill_node, node_pid, wait_for_subscribers, \
-    wait_until
+from checks import DogObserver, clock, kill_node, node_pid, wait_for_subscribers, wait_until
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 
@@ -28,7 +27,8 @@ class TestRobustness(unittest.TestCase):
     def setUpClass(cls):
         rospy.init_node('check_robustness')
         clock()
-        cls.dog, cls.rosout = DogObserver(), Rosout()
+        cls.dog = DogObserver()
+        cls.rosout = cls.dog.rosout
         cls.command = rospy.Publisher('/ball/command', String, queue_size=BURST + 10)
         cls.robot_cmd = rospy.Publisher('/robot/cmd_vel', Twist, queue_size=10)
         cls.ball_cmd = rospy.Publisher('/ball/cmd_vel', Twist, queue_size=10)

@@ -132,10 +132,16 @@ def wait_for_subscribers(pub, ros_seconds=30.0):
 
 
 class DogObserver(object):
-    """Everything a scenario-A checker looks at: states, poses, head."""
+    """Everything a scenario-A checker looks at: states, poses, head.
 
-    def __init__(self):
+    ``states`` are the labels of the latched ``/robot/state`` (every one: the
+    state machine queues 10) with the checker's ROS time at arrival; for
+    timings, :meth:`logged` has the state machine's own stamps ('state: X'
+    on /rosout)."""
+
+    def __init__(self, rosout=None):
         self.states, self.head_positions = [], []      # (ros time, label); rad
+        self.rosout = rosout or Rosout()
         self.robot, self.ball = Pose('/robot/odom'), Pose('/ball/odom')
         rospy.Subscriber('/robot/state', String, self._on_state, queue_size=10)
         rospy.Subscriber('/robot/joint_states', JointState, self._on_joints, queue_size=50)
@@ -151,8 +157,16 @@ class DogObserver(object):
     def state(self):
         return self.states[-1][1] if self.states else None
 
-    def entered(self, label):
-        return [t for t, s in self.states if s == label]
+    def entered(self, label, after=None):
+        """When ``label`` arrived (checker's ROS time), the arrivals after ``after``."""
+        return [t for t, s in self.states if s == label and (after is None or t > after)]
+
+    def logged(self, label, after=None):
+        """When the state machine entered ``label`` (its stamps), after ``after``."""
+        stamps = [m.header.stamp.to_sec() for m in self.rosout.lines('state: ' + label,
+                                                                     node='/state_machine')
+                  if m.msg == 'state: ' + label]
+        return [t for t in stamps if after is None or t > after]
 
     def ball_distance(self):
         if self.robot.msg is None or self.ball.msg is None:
@@ -180,6 +194,22 @@ class DogCheck(unittest.TestCase):
     def tell_the_ball(self, text):
         wait_for_subscribers(self.command)
         self.command.publish(String(text))
+
+
+def wait_for_graph(topic, node, role='subscriber', wall_seconds=30.0):
+    """Wait (wall time, asking the master twice a second) until ``node`` is a
+    ``role`` ('subscriber' or 'publisher') of ``topic``: for a message that two
+    other nodes must pass on, which no topic of the checker can tell."""
+    master = rosgraph.Master(rospy.get_name())
+    end = time.monotonic() + wall_seconds
+    index = 1 if role == 'subscriber' else 0
+    while time.monotonic() < end and not rospy.is_shutdown():
+        entries = dict(master.getSystemState()[index])
+        if node in entries.get(topic, []):
+            return
+        time.sleep(0.5)
+    raise AssertionError('%s is not a %s of %s after %.0f s' % (node, role, topic,
+                                                                 wall_seconds))
 
 
 def kill_node(name):

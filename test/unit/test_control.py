@@ -5,7 +5,7 @@ import pytest
 
 from exp_assignment2.control import (DONE, FIX_YAW, GO_STRAIGHT, BallFollower, GoToPoint,
                                      planar_velocity, visual_servo)
-from exp_assignment2.geometry import normalize_angle
+from exp_assignment2.geometry import normalize_angle, world_to_body
 
 
 def simulate(ctrl, x, y, yaw, gx, gy, dt=0.02, steps=5000):
@@ -96,3 +96,13 @@ def test_ball_follower_searches_when_no_ball_and_servoes_otherwise():
     assert right.angular < 0 and right.linear > 0     # ball right and far: turn right, go
     at_target = follower.command(Ball(400, 400, 240, 400, 400), 800)
     assert at_target == (pytest.approx(0.0), pytest.approx(0.0))
+
+
+@pytest.mark.parametrize('yaw', [0.0, math.radians(159), -2.0, math.pi, 7.0])
+def test_a_world_velocity_in_the_body_frame_moves_the_body_along_it(yaw):
+    vx, vy = 0.6, -0.8
+    bx, by = world_to_body(vx, vy, yaw)
+    # what planar_move does with a body-frame command: rotate it by the heading
+    wx = bx * math.cos(yaw) - by * math.sin(yaw)
+    wy = bx * math.sin(yaw) + by * math.cos(yaw)
+    assert abs(wx - vx) < 1e-12 and abs(wy - vy) < 1e-12

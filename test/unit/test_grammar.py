@@ -2,7 +2,8 @@
 import pytest
 
 from exp_assignment2.grammar import (CommandError, format_go_to, parse_ball_command,
-                                     parse_motion_command, parse_voice, quote)
+                                     parse_motion_command, parse_voice, quote, show_number,
+                                     show_numbers)
 from exp_assignment2.refusal import parse_or_refuse
 
 
@@ -136,3 +137,15 @@ def test_a_number_of_thousands_of_digits_is_refused_not_a_crash(parser):
 @pytest.mark.parametrize('parser', [parse_ball_command, parse_voice, parse_motion_command])
 def test_leading_zeros_are_still_a_number(parser):
     assert tuple(parser('go to 0003 +02'))[1:] == (3, 2)
+
+
+@pytest.mark.parametrize('value,text', [
+    (1e308, '1e+308'), (-1e15, '-1e+15'), (-0.0, '-0'), (0, '0'), (2.5, '2.5'), (7, '7'),
+    (float('-inf'), '-inf'), (float('nan'), 'nan'), (8.0000001, '8.0000001'),
+    (2147483647.0, '2147483647'), (31.35, '31.35'), ('x', "'x'")])
+def test_a_number_in_a_refusal_is_short_and_printed_one_way(value, text):
+    assert show_number(value) == text
+
+
+def test_numbers_are_printed_as_a_tuple():
+    assert show_numbers((float('inf'), 0.0, -1e308)) == '(inf, 0, -1e+308)'

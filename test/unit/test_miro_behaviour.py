@@ -159,6 +159,22 @@ def test_a_word_is_valid_for_voice_timeout_only():
     assert miro.ears.take(('go_to',)) is None
 
 
+def test_an_order_said_as_play_ends_gets_a_line_saying_it_came_too_late():
+    clock, world, miro = make_miro(loops=1, listen_time=1.0)
+    miro.person.saw_gesture((5, 5), (7, 7))
+
+    def order_at_the_end(now, dt):
+        if len(world.commands) == 2 and world.arrivals() == [(5, 5), (7, 7)]:
+            miro.ears.hear(parse_voice('go to 6 2'), 'go to 6 2')
+            clock.tickers.remove(order_at_the_end)
+    clock.tickers.append(order_at_the_end)
+    assert MiroPlay(miro).execute(None) == 'normal'
+    miro.ears.enter('NORMAL')
+    late = [l for l in miro.log.text().splitlines() if 'too late' in l]
+    assert late == ["PLAY is over: 'go to 6 2' came too late; not kept"]
+    assert [t for _, _, t in world.commands] == [(5, 5), (7, 7)]
+
+
 def test_a_call_before_sleeping_is_not_acted_on_after_waking():
     clock, world, miro = make_miro(sleep_time=1.0)
     miro.ears.enter('NORMAL')

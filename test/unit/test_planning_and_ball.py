@@ -30,6 +30,17 @@ def test_bad_goals_are_refused_with_the_reason(x, y, z, why):
     assert why in goal_error(x, y, z)
 
 
+@pytest.mark.parametrize('x,y,z,text', [
+    (1e308, 0.0, None, 'goal x, y = (1e+308, 0) is outside the arena'),
+    (-0.0, -INF, None, 'goal x, y = (-0, -inf) is not finite'),
+    (-0.0, -1e15, None, 'goal x, y = (-0, -1e+15) is outside the arena'),
+    (1.0, 2.5, 1e15, 'goal z = 1e+15 is above'),
+    (1.0, 2.5, -NAN, 'goal z = nan (the ball\'s height) is not finite')])
+def test_refusals_print_every_number_one_way(x, y, z, text):
+    assert goal_error(x, y, z).startswith(text)
+    assert len(goal_error(x, y, z)) < 120
+
+
 def test_z_is_not_checked_where_it_is_ignored():
     assert goal_error(1.0, 1.0) is None          # the robot server passes no z
 

@@ -1,6 +1,5 @@
 """plot_run.py's pure parts (scenario, states, hidden stretches) on made-up
 data, and the figure they make (test_plot_run_cli.py runs the script)."""
-import os
 import types
 
 import pytest

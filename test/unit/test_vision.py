@@ -103,3 +103,16 @@ def test_vision_scale_keeps_400_px_of_width_and_empty_data_is_no_image():
     assert [vision_scale(w) for w in (320, 400, 799, 800, 1280, 1600, 3200)] == [
         1, 1, 1, 2, 2, 4, 8]
     assert decode_jpeg(b'') is None and decode_jpeg(b'not a jpeg') is None
+
+
+@pytest.mark.parametrize('data', [b'', b'\x00', b'not a jpeg at all', bytes(range(256)) * 4,
+                                  b'\xff\xd8\xff\xe0' + b'\x00' * 60])
+def test_a_frame_that_is_not_a_jpeg_image_decodes_to_none(data):
+    assert decode_jpeg(data) is None
+
+
+def test_a_truncated_jpeg_is_not_an_image_or_is_a_whole_one():
+    img = np.zeros((64, 64, 3), np.uint8)
+    data = encode_jpeg(img, 80)
+    decoded = decode_jpeg(data[:len(data) // 2])
+    assert decoded is None or decoded.shape == (64, 64, 3)

@@ -1,9 +1,11 @@
 """The person MiRo plays with: what they say and where they are (no ROS).
 
 :class:`Ears` keeps what was said: a word is valid for ``voice_timeout`` s and
-only in the state it was said in (entering a state forgets the rest). While
-MiRo is busy moving in PLAY (:meth:`Ears.busy` to :meth:`Ears.ready`), words
-wait without ageing, so an order is never lost to a long drive. Asleep, MiRo does not listen: one line says so.
+only in the state it was said in (entering a state forgets the rest; a word
+still valid then, said as the state ended, gets a line saying it came too
+late). While MiRo is busy moving in PLAY (:meth:`Ears.busy` to
+:meth:`Ears.ready`), words wait without ageing, so an order is never lost to
+a long drive. Asleep, MiRo does not listen: one line says so.
 
 :class:`Person` knows where the person is and points: the last gesture, else
 the configured place. :class:`SimulatedPerson` stands in, from a seeded
@@ -12,6 +14,7 @@ generator, when nobody talks (as the original's random user did).
 import threading
 
 from exp_assignment2 import grid
+from exp_assignment2.grammar import format_go_to
 
 CALL = ('play',)          # VoiceCommand kinds: 'play' (also 'hey buddy') and 'go_to'
 ORDER = ('go_to',)
@@ -23,15 +26,19 @@ class Ears(object):
     def __init__(self, clock, log, voice_timeout=10.0):
         self.clock, self.log, self.voice_timeout = clock, log, voice_timeout
         self.lock = threading.Lock()
-        self.state, self.words = None, []       # words: [(valid_from, VoiceCommand)]
+        self.state, self.words = None, []       # words: [(valid_from, VoiceCommand, text)]
         self.told_asleep = False
         self.busy_since = None                  # set while MiRo moves in PLAY
 
     def enter(self, state):
         """MiRo enters ``state``: what was said before no longer counts."""
         with self.lock:
+            late = [text for _, _, text in self._fresh()]
+            left = self.state
             self.state, self.words, self.told_asleep = state, [], False
             self.busy_since = None
+        for text in late:
+            self.log.info('%s is over: %r came too late; not kept', left, text)
 
     def hear(self, cmd, text=''):
         """A word arrives (any thread)."""
@@ -46,7 +53,7 @@ class Ears(object):
             if state == 'NORMAL' and cmd.kind not in CALL:
                 self.log.info('NORMAL: %r only counts in PLAY; not kept', text or cmd.kind)
                 return
-            self.words.append((self.clock.now(), cmd))
+            self.words.append((self.clock.now(), cmd, text or _text_of(cmd)))
         self.clock.notify()
 
     def busy(self):
@@ -60,17 +67,17 @@ class Ears(object):
         with self.lock:
             since, self.busy_since = self.busy_since, None
             if since is not None:
-                self.words = [(t + now - since if t < since else now, cmd)
-                              for t, cmd in self.words]
+                self.words = [(t + now - since if t < since else now, cmd, text)
+                              for t, cmd, text in self.words]
 
     def _fresh(self):
         now = self.clock.now() if self.busy_since is None else self.busy_since
-        self.words = [(t, c) for t, c in self.words if now - t <= self.voice_timeout]
+        self.words = [w for w in self.words if now - w[0] <= self.voice_timeout]
         return self.words
 
     def has(self, kinds):
         with self.lock:
-            return any(c.kind in kinds for _, c in self._fresh())
+            return any(c.kind in kinds for _, c, _ in self._fresh())
 
     def take(self, kinds):
         """The oldest valid word of ``kinds`` (removed), or None."""
@@ -80,6 +87,10 @@ class Ears(object):
                     self.words.remove(item)
                     return item[1]
         return None
+
+
+def _text_of(cmd):
+    return format_go_to(cmd.x, cmd.y) if cmd.kind == 'go_to' else cmd.kind
 
 
 class SimulatedPerson(object):

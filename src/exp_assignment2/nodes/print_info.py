@@ -9,6 +9,7 @@ from std_msgs.msg import Float64MultiArray, Int64MultiArray, String
 
 from exp_assignment2.behaviour.miro import STATE_PARAM
 from exp_assignment2.grammar import CommandError, parse_motion_command, quote
+from exp_assignment2.ros.clock import RosClock
 
 
 def on_command(msg):
@@ -32,9 +33,18 @@ def on_arrival(msg):
 
 def main():
     rospy.init_node('print_info')
-    rospy.Subscriber('/state', String, on_state, queue_size=100)
-    rospy.Subscriber('/command', String, on_command, queue_size=100)
-    rospy.Subscriber('/target_pos', Int64MultiArray, lambda m: rospy.loginfo(
-        'target: (%s)', ', '.join(str(v) for v in m.data[:2])), queue_size=100)
-    rospy.Subscriber('/arrival', Float64MultiArray, on_arrival, queue_size=100)
+    clock = RosClock()
+
+    def in_ros_time(log):
+        """``log(msg)`` once ROS time runs: the latched /state reaches a respawned
+        print_info before /clock does, and its line would carry 0.000000."""
+        def callback(msg):
+            if clock.wait_for_time():
+                log(msg)
+        return callback
+    rospy.Subscriber('/state', String, in_ros_time(on_state), queue_size=100)
+    rospy.Subscriber('/command', String, in_ros_time(on_command), queue_size=100)
+    rospy.Subscriber('/target_pos', Int64MultiArray, in_ros_time(lambda m: rospy.loginfo(
+        'target: (%s)', ', '.join(str(v) for v in m.data[:2]))), queue_size=100)
+    rospy.Subscriber('/arrival', Float64MultiArray, in_ros_time(on_arrival), queue_size=100)
     rospy.spin()

@@ -19,8 +19,12 @@ def main():
                             float(rospy.get_param('~max_linear', 0.8)),
                             float(rospy.get_param('~max_angular', 1.0)),
                             float(rospy.get_param('~search_rate', 0.5)))
-    wheels = CommandPublisher(turn_sign())
-    eyes = RosDogEyes(RosClock(), float(rospy.get_param('~min_radius_at_800', 10.0)),
+    clock = RosClock()
+    # the camera's first subscriber starts the world (simulator wait_for_camera)
+    eyes = RosDogEyes(clock, float(rospy.get_param('~min_radius_at_800', 10.0)),
                       gui=bool(rospy.get_param('~gui', False)))
+    if not clock.wait_for_time():
+        return
+    wheels = CommandPublisher(turn_sign())
     eyes.follow(lambda ball, width: wheels.drive(*follower.command(ball, width)))
     run_until_shutdown(rospy.spin)

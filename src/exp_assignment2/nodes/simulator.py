@@ -25,6 +25,8 @@ from exp_assignment2.ros.world_markers import WorldMarkers
 from exp_assignment2.sim.engine import Engine
 from exp_assignment2.sim.plugins import registry
 from exp_assignment2.sim.world import parse_model, parse_world
+from exp_assignment2.ros.clock_watch import watch_clock
+from exp_assignment2.sim.limits import check_node_params
 
 # The node's own parameters; every other ~ parameter is the world's.
 NODE_PARAMS = {'real_time_factor': 1.0, 'time_step': 0.01, 'renderer': 'gl', 'paused': False,
@@ -51,7 +53,8 @@ class SimulatorNode(object):
     """The engine, its world, its clock and Gazebo's ROS interface."""
 
     def __init__(self, params):
-        self.params = dict(NODE_PARAMS, **{k: v for k, v in params.items() if k in NODE_PARAMS})
+        self.params = check_node_params(     # one line naming a refused parameter
+            dict(NODE_PARAMS, **{k: v for k, v in params.items() if k in NODE_PARAMS}))
         world = parse_world({k: v for k, v in params.items() if k not in NODE_PARAMS})
         p = self.params
         for spec in world.models:
@@ -72,6 +75,7 @@ class SimulatorNode(object):
                           max_angular=float(p['max_angular']), camera=camera,
                           jpeg_quality=int(p['jpeg_quality'])))
         self.clock_pub = rospy.Publisher('/clock', Clock, queue_size=10)
+        watch_clock(lambda: self.engine.time)      # an ERROR naming a second /clock publisher
         self.engine.step_listeners.append(lambda engine: self.publish_clock())
         hidden = set(p['hidden'] or [])
         try:

@@ -28,6 +28,8 @@ def main():
         rospy.logfatal('state_machine: %s', exc)
         raise SystemExit(1)
     clock = RosClock()
+    # the camera's first subscriber starts the world (simulator wait_for_camera):
+    # the eyes before any wait for time
     eyes = RosDogEyes(clock, float(rospy.get_param('~min_radius_at_800', 10.0)),
                       gui=bool(rospy.get_param('~gui', False)))
     robot = PlanningClient('/robot_reaching_goal', clock)
@@ -35,7 +37,8 @@ def main():
         return
     body = RosDogBody(turn_sign(), robot)
     dog = Dog(clock, body, eyes, params, random.Random(rospy.get_param('~seed', 0)), RosLog())
-    state_pub = rospy.Publisher(robot_name('state'), String, queue_size=1, latch=True)
+    # every state reaches every subscriber: NORMAL then SLEEP 0.01 s later are two messages
+    state_pub = rospy.Publisher(robot_name('state'), String, queue_size=10, latch=True)
 
     def report(label):
         rospy.loginfo('state: %s', label)

@@ -48,11 +48,11 @@ def main():
     clock, log = RosClock(), RosLog()
     simulated = (SimulatedPerson(random.Random(seed))
                  if rospy.get_param('~simulate_person', True) else None)
+    if not clock.wait_for_time():           # a respawned node's lines carry ROS time
+        return
     ears = Ears(clock, log, params.voice_timeout)
     person = Person(where, simulated, on_move=person_model_mover())
     listen(ears, person, refusal_log)
-    if not clock.wait_for_time():
-        return
     miro = Miro(clock, RosMiroBody(clock), ears, person, params, random.Random(seed), log,
                 simulated=simulated)
     state_pub = rospy.Publisher('/state', String, queue_size=10, latch=True)

@@ -14,7 +14,7 @@ from geometry_msgs.msg import Twist
 from sensor_msgs.msg import CompressedImage
 from std_msgs.msg import Float64
 
-from exp_assignment2.ros.frames import decode_frame
+from exp_assignment2.ros.frames import FrameDecoder
 from exp_assignment2.ros.robot_model import robot_name
 from exp_assignment2.vision import BallDetector, annotate, encode_jpeg, vision_scale
 
@@ -34,7 +34,7 @@ class CommandPublisher(object):
         self.pub = rospy.Publisher(robot_name(topic), Twist, queue_size=1)
         self.held, self.last = None, 0.0
         self.lock = threading.Lock()
-        rospy.Timer(rospy.Duration(HOLD_PERIOD), self._hold)
+        rospy.Timer(rospy.Duration(HOLD_PERIOD), self._hold, reset=True)  # survives time going back
 
     def drive(self, linear, angular):
         with self.lock:
@@ -57,7 +57,8 @@ class CommandPublisher(object):
     def _hold(self, _event):
         with self.lock:
             held = self.held
-        if held is not None and rospy.get_time() - self.last >= HOLD_PERIOD * 0.9:
+        since = rospy.get_time() - self.last
+        if held is not None and not 0.0 <= since < HOLD_PERIOD * 0.9:   # < 0: time went back
             self._publish(*held)
 
 
@@ -111,6 +112,7 @@ class RosDogEyes(object):
         self.seen, self.servo = None, None
         self.window = ImageWindow() if gui else None
         self.output_pub = rospy.Publisher(OUTPUT_TOPIC, CompressedImage, queue_size=1)
+        self.decode = FrameDecoder(robot_name(CAMERA_TOPIC))
         # a few frames of slack: a burst is absorbed, not dropped
         rospy.Subscriber(robot_name(CAMERA_TOPIC), CompressedImage, self._on_image, queue_size=3,
                          buff_size=2 ** 25)
@@ -133,7 +135,7 @@ class RosDogEyes(object):
             self.missed += seq - self.last_seq - 1
         self.last_seq, self.frames = seq, self.frames + 1
         scale = self.scale
-        bgr = decode_frame(msg, 'camera', scale)
+        bgr = self.decode(msg, scale)
         if bgr is None:
             return
         width = bgr.shape[1] * scale
@@ -141,7 +143,7 @@ class RosDogEyes(object):
             self.scale = vision_scale(width)
         ball = self.detector.detect(bgr, scale)
         if ball is not None:
-            self.seen = msg.header.stamp.to_sec()
+            self.seen = self.clock.from_source(msg.header.stamp.to_sec())
         servo = self.servo
         if servo is not None:
             servo(ball, width)
@@ -149,7 +151,7 @@ class RosDogEyes(object):
         wanted = self.output_pub.get_num_connections() > 0
         if wanted or self.window is not None:
             if scale != 1:                     # the view is drawn at full size
-                bgr = decode_frame(msg, 'camera')
+                bgr = self.decode(msg)
             annotate(bgr, ball)
             if self.window is not None:
                 self.window.show(bgr)

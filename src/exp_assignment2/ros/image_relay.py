@@ -10,7 +10,7 @@ import threading
 import rospy
 from sensor_msgs.msg import CompressedImage, Image
 
-from exp_assignment2.ros.frames import decode_frame
+from exp_assignment2.ros.frames import FrameDecoder
 
 
 class Decompressor(rospy.SubscribeListener):
@@ -19,6 +19,7 @@ class Decompressor(rospy.SubscribeListener):
     def __init__(self):
         rospy.SubscribeListener.__init__(self)
         self.lock, self.sub = threading.Lock(), None
+        self.decode = FrameDecoder(rospy.resolve_name('in'))
         self.pub = rospy.Publisher('out', Image, queue_size=1, subscriber_listener=self)
 
     def peer_subscribe(self, topic_name, topic_publish, peer_publish):
@@ -38,7 +39,7 @@ class Decompressor(rospy.SubscribeListener):
                 self.sub = None
 
     def _on_image(self, msg):
-        bgr = decode_frame(msg, 'image_decompress')
+        bgr = self.decode(msg)
         if bgr is None:
             return
         h, w = bgr.shape[:2]

@@ -18,9 +18,11 @@ from std_msgs.msg import Float64MultiArray, Int64MultiArray, String
 
 from exp_assignment2 import grid
 from exp_assignment2.control import planar_velocity
+from exp_assignment2.geometry import world_to_body, yaw_of
 from exp_assignment2.grammar import parse_voice, quote
 from exp_assignment2.msg import Gesture
 from exp_assignment2.refusal import parse_or_refuse
+from exp_assignment2.ros.log import refusal_log
 
 ACK_TIMEOUT = 1.0   # s of ROS time for the grounding node to answer an order
 QUIET_TRIES = 10    # unanswered orders sent again before a warning
@@ -118,27 +120,30 @@ def listen(ears, person, refuse):
 
 class OmniMotionController(object):
     """Drives the omnidirectional MiRo to ``/target_pos`` at ``rate`` Hz of ROS
-    time; a new target replaces the old one at once. On arrival (within
+    time, whatever its heading (the planar drive reads x, y in MiRo's frame);
+    a new target replaces the old one at once. On arrival (within
     ``tolerance``) it stops, publishes ``/arrival`` and sets ``/all`` and
     ``/arrived`` (0 while moving, 1 once there), the original's parameters."""
 
     def __init__(self, kp=1.0, max_speed=1.0, tolerance=0.05, rate=20.0):
         self.kp, self.max_speed, self.tolerance = kp, max_speed, tolerance
-        self.target, self.pose, self.number = None, None, 1
+        self.target, self.pose, self.number = None, None, 1    # pose: (position, yaw)
         self.cmd_pub = rospy.Publisher('/cmd_vel', Twist, queue_size=1)
         self.arrival_pub = rospy.Publisher('/arrival', Float64MultiArray, queue_size=10)
+        self.refuse = refusal_log('/target_pos')
         rospy.set_param('/arrived', 1)
         rospy.Subscriber('/odom', Odometry, self._on_odom, queue_size=1)
         rospy.Subscriber('/target_pos', Int64MultiArray, self._on_target, queue_size=10)
-        rospy.Timer(rospy.Duration(1.0 / rate), self._tick)
+        rospy.Timer(rospy.Duration(1.0 / rate), self._tick, reset=True)  # survives time going back
 
     def _on_odom(self, msg):
-        self.pose = msg.pose.pose.position
+        q = msg.pose.pose.orientation
+        self.pose = (msg.pose.pose.position, yaw_of((q.x, q.y, q.z, q.w)))
 
     def _on_target(self, msg):
         if len(msg.data) != 2 or not grid.on_grid(msg.data[0], msg.data[1]):
-            rospy.logerr_throttle(1.0, '/target_pos: %s is not a grid point [x, y] in [%d, %d]; '
-                                  'ignored' % (list(msg.data)[:4], grid.GRID_MIN, grid.GRID_MAX))
+            self.refuse('%s is not a grid point [x, y] in [%d, %d]; ignored'
+                        % (list(msg.data)[:4], grid.GRID_MIN, grid.GRID_MAX))
             return
         self.target = (msg.data[0], msg.data[1])
         rospy.set_param('/arrived', 0)
@@ -147,6 +152,7 @@ class OmniMotionController(object):
         target, pose = self.target, self.pose
         if target is None or pose is None:
             return
+        pose, yaw = pose
         if math.hypot(target[0] - pose.x, target[1] - pose.y) <= self.tolerance:
             self.target = None
             self.cmd_pub.publish(Twist())
@@ -157,6 +163,7 @@ class OmniMotionController(object):
             self.number += 1
             return
         twist = Twist()
-        twist.linear.x, twist.linear.y = planar_velocity(pose.x, pose.y, target[0], target[1],
-                                                         self.kp, self.max_speed)
+        twist.linear.x, twist.linear.y = world_to_body(
+            *planar_velocity(pose.x, pose.y, target[0], target[1], self.kp, self.max_speed),
+            yaw=yaw)
         self.cmd_pub.publish(twist)

@@ -10,6 +10,7 @@ keep the last one forever, as Gazebo's plugins do).
 import math
 
 from exp_assignment2.geometry import all_finite, cap_norm, clamp
+from exp_assignment2.grammar import show_number, show_numbers
 
 
 class VelocityCommand(object):
@@ -29,7 +30,7 @@ class VelocityCommand(object):
     def command(self, vx, vy, wz):
         """Take a command (body frame); True when it had to be clamped."""
         if not all_finite(vx, vy, wz):
-            raise ValueError('velocity command (%r, %r, %r) is not finite' % (vx, vy, wz))
+            raise ValueError('velocity command %s is not finite' % show_numbers((vx, vy, wz)))
         vx, vy, wz = float(vx), float(vy), float(wz)
         over = (math.hypot(vx, vy) > self.max_linear * (1 + 1e-6)
                 or abs(wz) > self.max_angular * (1 + 1e-6))
@@ -169,7 +170,7 @@ class JointPosition(object):
     def command(self, position):
         """Set the target; returns the clamped target."""
         if not all_finite(position):
-            raise ValueError('joint position command %r is not finite' % (position,))
+            raise ValueError('joint position command %s is not finite' % show_number(position))
         self.target = min(max(float(position), self.lower), self.upper)
         self.dirty = True
         return self.target

@@ -11,6 +11,7 @@ from controller_manager_msgs.srv import (ListControllers, ListControllersRespons
 from sensor_msgs.msg import JointState
 from std_msgs.msg import Float64
 
+from exp_assignment2.grammar import show_number
 from exp_assignment2.refusal import RefusalLog
 from exp_assignment2.sim.drives import JointPosition
 from exp_assignment2.sim.plugins.cores import Every
@@ -80,7 +81,7 @@ class JointCommandController(object):
             self.ignored('ignored: %s' % exc)
             return
         if used != value:
-            self.clamped('%.3g clamped to %.3g' % (value, used))
+            self.clamped('%s clamped to %s' % (show_number(value), show_number(used)))
 
     def publish(self):
         pass
@@ -115,7 +116,7 @@ class VelocityController(JointCommandController):
 
     def command(self, value):
         if not value == value or value in (float('inf'), float('-inf')):
-            raise ValueError('joint velocity command %r is not finite' % (value,))
+            raise ValueError('joint velocity command %s is not finite' % show_number(value))
         self.velocity = max(-self.limit, min(self.limit, float(value)))
         return self.velocity
 

@@ -7,6 +7,7 @@ from sensor_msgs.msg import JointState
 from std_msgs.msg import Header
 from tf2_msgs.msg import TFMessage
 
+from exp_assignment2.grammar import show_numbers
 from exp_assignment2.refusal import RefusalLog
 
 
@@ -63,8 +64,8 @@ class CommandTopic(object):
             self.ignored('ignored: %s' % exc)
             return
         if clamped:
-            self.clamped('(%.3g, %.3g, %.3g) clamped to the limits, %s'
-                         % (tuple(values) + (self.command.limits,)))
+            self.clamped('%s clamped to the limits, %s'
+                         % (show_numbers(values), self.command.limits))
 
     def close(self):
         self.sub.unregister()
