@@ -2,7 +2,8 @@
 """The project's two PlanningAction servers through real actionlib clients:
 the original's feedback wording, results, preemption, the ball's height from
 the goal's z, bad goals REJECTED with one line on /rosout each and without
-touching the goal under way, and a flood of cancels of an unknown goal."""
+touching the goal under way, a flood of cancels of an unknown goal, and
+Gazebo's reset_simulation (time back to 0) during a goal."""
 import math
 import time
 import unittest
@@ -12,6 +13,7 @@ import rospy
 import rostest
 from actionlib_msgs.msg import GoalID, GoalStatus
 from rosgraph_msgs.msg import Log
+from std_srvs.srv import Empty
 
 from checks import Pose, Rosout, clock, wait_for_subscribers, wait_until
 from exp_assignment2.msg import PlanningAction
@@ -110,6 +112,26 @@ class TestPlanningAction(unittest.TestCase):
         rospy.loginfo('50 cancels of an unknown goal: %d lines: %s', len(lines), lines)
         self.assertTrue(1 <= len(lines) <= 2, lines)
         self.assertTrue(all(line.startswith('/reaching_goal/cancel: ') for line in lines), lines)
+
+    def test_reset_simulation_during_a_goal_sets_time_back_and_the_goal_still_arrives(self):
+        reset = rospy.ServiceProxy('/gazebo/reset_simulation', Empty)
+        rospy.wait_for_service('/gazebo/reset_simulation', 30.0)
+        self.robot.send_goal(make_goal(3.0, -2.0))
+        clock().sleep(3.0)
+        before = rospy.get_time()
+        reset()
+        self.assertTrue(wait_until(lambda: rospy.get_time() < before, 10.0),
+                        'ROS time did not go back (%.2f s before the reset)' % before)
+        rospy.loginfo('reset_simulation at %.2f s of ROS time; now %.2f s', before,
+                      rospy.get_time())
+        self.assertTrue(self.robot.wait_for_result(rospy.Duration(120)))
+        self.assertEqual(self.robot.get_state(), GoalStatus.SUCCEEDED,
+                         self.robot.get_goal_status_text())
+        self.robot_pose.next()
+        x, y, _, _ = self.robot_pose.xyzyaw()
+        self.assertLess(math.hypot(x - 3.0, y + 2.0), 0.15)
+        state, _ = self.run_goal(self.ball, make_goal(-2.0, 2.0, 0.5))     # the other server too
+        self.assertEqual(state, GoalStatus.SUCCEEDED, self.ball.get_goal_status_text())
 
     def test_what_is_ignored_is_ignored_whatever_its_value(self):
         goal = make_goal(-4.0, 6.0, float('nan'))      # z is not used by the robot server

@@ -35,7 +35,8 @@ def test_what_the_launch_files_pass_is_accepted():
     ('camera_hfov', 180, '180'), ('real_time_factor', -1, '-1'),
     ('real_time_factor', float('inf'), 'inf'), ('time_step', 0, '0'),
     ('renderer', 'bogus', 'bogus'), ('paused', 'yes', 'yes'), ('cmd_timeout', -0.1, '-0.1'),
-    ('start_timeout', 0, '0')])
+    ('start_timeout', 0, '0'), ('max_real_time_factor', -1, '-1'),
+    ('max_real_time_factor', 'fast', 'fast')])
 def test_a_bad_value_is_one_line_naming_it_and_what_is_accepted(name, value, shown):
     with pytest.raises(ParameterError) as refused:
         check(**{name: value})

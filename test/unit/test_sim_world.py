@@ -89,10 +89,18 @@ def test_pacing_holds_simulated_time_to_the_real_time_factor(rtf):
     assert sim / wall.t == pytest.approx(rtf, rel=1e-6)
 
 
-def test_pacing_at_zero_never_waits():
+def test_pacing_at_zero_runs_at_its_ceiling_and_without_one_never_waits():
     wall = FakeWall()
-    pacer = Pacer(0.0, wall=wall)
-    assert all(pacer.delay(t * 0.01) == 0.0 for t in range(100))
+    pacer = Pacer(0.0, wall=wall, max_real_time_factor=20.0)
+    pacer.restart(0.0)
+    sim = 0.0
+    for _ in range(1000):
+        sim += 0.01
+        wall.t += pacer.delay(sim)
+    assert sim / wall.t == pytest.approx(20.0, rel=1e-6)
+    assert Pacer(0.0).pace == 20.0                   # the default ceiling
+    unbounded = Pacer(0.0, wall=wall, max_real_time_factor=0.0)
+    assert all(unbounded.delay(t * 0.01) == 0.0 for t in range(100))
 
 
 def test_a_loop_that_falls_behind_starts_again_instead_of_racing():

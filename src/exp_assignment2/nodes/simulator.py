@@ -27,9 +27,11 @@ from exp_assignment2.sim.plugins import registry
 from exp_assignment2.sim.world import parse_model, parse_world
 from exp_assignment2.ros.clock_watch import watch_clock
 from exp_assignment2.sim.limits import check_node_params
+from exp_assignment2.sim.pacing import MAX_REAL_TIME_FACTOR
 
 # The node's own parameters; every other ~ parameter is the world's.
-NODE_PARAMS = {'real_time_factor': 1.0, 'time_step': 0.01, 'renderer': 'gl', 'paused': False,
+NODE_PARAMS = {'real_time_factor': 1.0, 'max_real_time_factor': MAX_REAL_TIME_FACTOR,
+               'time_step': 0.01, 'renderer': 'gl', 'paused': False,
                'cmd_timeout': 0.5, 'max_linear': 2.0, 'max_angular': 3.0,
                'camera_width': None, 'camera_height': None, 'camera_rate': None,
                'camera_hfov': None, 'jpeg_quality': 80, 'wait_for_camera': False,
@@ -68,6 +70,7 @@ class SimulatorNode(object):
                   if p['camera_' + key] not in (None, '')}
         self.engine = Engine(
             time_step=float(p['time_step']), real_time_factor=float(p['real_time_factor']),
+            max_real_time_factor=float(p['max_real_time_factor']),
             registry=registry(), bounds=world.bounds, egl=p['renderer'] == 'egl',
             paused=bool(p['paused']), log=RosLog(),
             settings=dict(renderer=str(p['renderer']), cmd_timeout=float(p['cmd_timeout']),
@@ -94,8 +97,11 @@ class SimulatorNode(object):
         self.world = GazeboWorld(self.engine, sdf_to_urdf=sdf_to_urdf)
         self.state = GazeboState(self.engine, self.world)
         self.markers = WorldMarkers(self.engine)
-        rospy.loginfo('simulator: %d models, step %.4f s, real_time_factor %g%s',
-                      len(self.engine.models), self.engine.time_step, self.engine.pacer.rtf,
+        pacer = self.engine.pacer
+        rospy.loginfo('simulator: %d models, step %.4f s, real_time_factor %g%s%s',
+                      len(self.engine.models), self.engine.time_step, pacer.rtf,
+                      ' (as fast as possible, at most %gx)' % pacer.pace
+                      if pacer.rtf == 0 and pacer.pace else '',
                       ', paused' if self.engine.paused else '')
 
     def _spawn_sdf_world(self, path):

@@ -20,7 +20,7 @@ import threading
 
 from exp_assignment2.sim import urdf as urdf_reader
 from exp_assignment2.sim.model import Model
-from exp_assignment2.sim.pacing import Pacer
+from exp_assignment2.sim.pacing import MAX_REAL_TIME_FACTOR, Pacer
 from exp_assignment2.sim.physics import Physics
 from exp_assignment2.sim.plugins.base import EngineHandle, Plugin, PluginError
 
@@ -55,14 +55,17 @@ class Engine(object):
     :param bounds: (x_min, x_max, y_min, y_max) that driven bodies keep within
     :param settings: host settings handed to plugins (``EngineHandle.settings``)
     :param log: an object with ``info``, ``warn``, ``error`` (default: logging)
+    :param max_real_time_factor: real_time_factor 0's ceiling (0: none; see
+        :mod:`.pacing`)
     """
 
     def __init__(self, time_step=0.01, real_time_factor=1.0, registry=None, bounds=None,
-                 egl=False, settings=None, log=None, paused=False):
+                 egl=False, settings=None, log=None, paused=False,
+                 max_real_time_factor=MAX_REAL_TIME_FACTOR):
         self.physics = Physics(time_step, egl=egl)
         self.time_step = self.physics.time_step
         self._step_ns = int(round(self.time_step * 1e9))
-        self.pacer = Pacer(real_time_factor)
+        self.pacer = Pacer(real_time_factor, max_real_time_factor=max_real_time_factor)
         self.registry = dict(registry or {})
         self.bounds = tuple(bounds) if bounds is not None else INFINITE_BOUNDS
         self.settings = dict(settings or {})

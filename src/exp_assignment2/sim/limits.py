@@ -102,6 +102,10 @@ def check_node_params(params, max_size=gl_max_image_size):
     out = dict(params)
     out['real_time_factor'] = _real(params, 'real_time_factor', 0.0, math.inf,
                                     'a number >= 0 (1: real time, 0: as fast as possible)')
+    if 'max_real_time_factor' in params:
+        out['max_real_time_factor'] = _real(params, 'max_real_time_factor', 0.0, math.inf,
+                                            'a number >= 0 (real_time_factor 0\'s ceiling; '
+                                            '0: none)')
     out['time_step'] = _real(params, 'time_step', 0.0, 0.1, 'seconds in (0, 0.1]',
                              low_open=True)
     if params['renderer'] not in RENDERERS:
