@@ -22,8 +22,10 @@ FIXTURE = os.path.join(HERE, 'fixtures', 'user_pkg')
 WS = os.environ.get('EXP2_WS') or os.path.expanduser('~/.cache/exp_assignment2_ws')
 PLANNING_MD5 = 'c9821bcb163053e9fc3222c6782db3d8'     # exp_assignment2/PlanningAction
 
-pytestmark = pytest.mark.skipif(not os.path.exists(os.path.join(WS, 'devel', 'setup.bash')),
-                                reason='no catkin workspace at %s: bash tools/run setup' % WS)
+pytestmark = [pytest.mark.skipif(not os.path.exists(os.path.join(WS, 'devel', 'setup.bash')),
+                                 reason='no catkin workspace at %s: bash tools/run setup' % WS),
+              # one worker builds the session's overlays (pytest-xdist, tools/run test)
+              pytest.mark.xdist_group('overlay')]
 
 
 def original_env(package, *cmd, overlays, timeout=1200):

@@ -34,7 +34,7 @@ class TestPlanningAction(unittest.TestCase):
         cls.robot_pose, cls.ball_pose = Pose('/robot/odom'), Pose('/ball/odom')
         cls.rosout = Rosout()
 
-    def run_goal(self, client, goal, seconds=60.0):
+    def run_goal(self, client, goal, seconds=120.0):     # the servers' own goal_timeout
         stats = []
         client.send_goal(goal, feedback_cb=lambda fb: stats.append(fb.stat))
         self.assertTrue(client.wait_for_result(rospy.Duration(seconds)))
@@ -116,7 +116,7 @@ class TestPlanningAction(unittest.TestCase):
     def test_reset_simulation_during_a_goal_sets_time_back_and_the_goal_still_arrives(self):
         reset = rospy.ServiceProxy('/gazebo/reset_simulation', Empty)
         rospy.wait_for_service('/gazebo/reset_simulation', 30.0)
-        self.robot.send_goal(make_goal(3.0, -2.0))
+        self.robot.send_goal(make_goal(-2.0, 3.0))
         clock().sleep(3.0)
         before = rospy.get_time()
         reset()
@@ -129,7 +129,7 @@ class TestPlanningAction(unittest.TestCase):
                          self.robot.get_goal_status_text())
         self.robot_pose.next()
         x, y, _, _ = self.robot_pose.xyzyaw()
-        self.assertLess(math.hypot(x - 3.0, y + 2.0), 0.15)
+        self.assertLess(math.hypot(x + 2.0, y - 3.0), 0.15)
         state, _ = self.run_goal(self.ball, make_goal(-2.0, 2.0, 0.5))     # the other server too
         self.assertEqual(state, GoalStatus.SUCCEEDED, self.ball.get_goal_status_text())
 
