@@ -15,7 +15,7 @@ from actionlib_msgs.msg import GoalID, GoalStatus
 from rosgraph_msgs.msg import Log
 from std_srvs.srv import Empty
 
-from checks import Pose, Rosout, clock, wait_for_subscribers, wait_until
+from checks import Pose, Rosout, clock, finished, wait_for_subscribers, wait_until
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 
@@ -37,7 +37,7 @@ class TestPlanningAction(unittest.TestCase):
     def run_goal(self, client, goal, seconds=120.0):     # the servers' own goal_timeout
         stats = []
         client.send_goal(goal, feedback_cb=lambda fb: stats.append(fb.stat))
-        self.assertTrue(client.wait_for_result(rospy.Duration(seconds)))
+        self.assertTrue(finished(client, seconds))
         return client.get_state(), stats
 
     def test_robot_goal_gives_the_original_feedback_and_arrives(self):
@@ -67,7 +67,7 @@ class TestPlanningAction(unittest.TestCase):
         self.robot.send_goal(make_goal(7.0, -7.0))
         clock().sleep(1.0)
         self.robot.cancel_goal()
-        self.assertTrue(self.robot.wait_for_result(rospy.Duration(10)))
+        self.assertTrue(finished(self.robot, 10.0))
         self.assertEqual(self.robot.get_state(), GoalStatus.PREEMPTED)
 
     def test_bad_goals_are_refused_with_a_reason_on_rosout(self):
@@ -90,7 +90,7 @@ class TestPlanningAction(unittest.TestCase):
         self.robot.send_goal(make_goal(-5.0, 3.0))
         clock().sleep(3.0)
         second.send_goal(make_goal(float('nan'), 0.0))
-        self.assertTrue(second.wait_for_result(rospy.Duration(10)))
+        self.assertTrue(finished(second, 10.0))
         self.assertEqual(second.get_state(), GoalStatus.REJECTED)
         self.assertIn('not finite', second.get_goal_status_text())
         self.assertTrue(self.robot.wait_for_result(rospy.Duration(120)))

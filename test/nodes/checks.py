@@ -12,6 +12,7 @@ import time
 import unittest
 import xmlrpc.client
 
+import actionlib
 import rosgraph
 import rospy
 from nav_msgs.msg import Odometry
@@ -51,6 +52,14 @@ def eventually(predicate, ros_seconds=10.0, wall_seconds=10.0):
             return True
         if time.monotonic() >= wall_end:
             return False
+
+
+def finished(client, ros_seconds, wall_seconds=10.0):
+    """True once the goal of a SimpleActionClient is done: after its result,
+    or after ``ros_seconds`` of ROS time and ``wall_seconds`` of wall time (a
+    refusal or a preemption takes wall time, not ROS time)."""
+    return eventually(lambda: client.simple_state == actionlib.SimpleGoalState.DONE,
+                      ros_seconds, wall_seconds)
 
 
 class Watch(object):

@@ -46,3 +46,24 @@ def test_system_exit_keeps_its_code(exits):
     def stop():
         raise SystemExit(3)
     assert leave_code(stop) == 3
+
+
+def test_a_start_interrupted_by_the_end_of_the_launch_leaves_with_0(exits, monkeypatch):
+    def start():
+        raise rospy.exceptions.ROSInitException('init_node interrupted before it could complete')
+    monkeypatch.setattr(ending.rospy, 'is_shutdown', lambda: True)
+    assert leave_code(start) == 0
+
+
+def test_every_node_script_runs_its_main_here():
+    import glob
+    import os
+    scripts = os.path.join(os.path.dirname(__file__), '..', '..', 'scripts')
+    nodes = os.path.join(os.path.dirname(ending.__file__), '..', 'nodes')
+    for path in sorted(glob.glob(os.path.join(scripts, '*.py'))):
+        name = os.path.basename(path)
+        with open(os.path.join(nodes, name)) as f:
+            if 'rospy' not in f.read():
+                continue
+        with open(path) as f:
+            assert f.read().rstrip().endswith('run_until_shutdown(main)'), name

@@ -11,7 +11,9 @@ def run_until_shutdown(body):
 
     An error raised because ROS shut down under ``body`` (a topic closed in
     the middle of a publish, as ``rosnode kill`` can do to a state that is
-    just sending a goal) is the end of the node, not an error: it is dropped.
+    just sending a goal; ``init_node`` interrupted when roslaunch ends the
+    launch while the node starts) is the end of the node, not an error: it
+    is dropped. Every node's script runs its ``main`` here.
 
     The process then leaves at once, without the interpreter's teardown:
     with OpenCV loaded (Debian builds it with TBB), that teardown sometimes
