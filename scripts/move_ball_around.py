@@ -1,6 +1,12 @@
 #!/usr/bin/env python3
 """Moves the ball to random goals, waits, hides it, waits, again."""
-from exp_assignment2.nodes.move_ball_around import main
-from exp_assignment2.ros.ending import run_until_shutdown
+import signal
+
+# until rospy.init_node takes SIGINT over: roslaunch ending the launch while
+# this node starts ends it quietly, not with a traceback from an import
+signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+from exp_assignment2.nodes.move_ball_around import main  # noqa: E402
+from exp_assignment2.ros.ending import run_until_shutdown  # noqa: E402
 
 run_until_shutdown(main)

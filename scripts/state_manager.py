@@ -1,6 +1,12 @@
 #!/usr/bin/env python3
 """MiRo's behaviour: SLEEP, NORMAL and PLAY (SMACH), obeying voice and gestures."""
-from exp_assignment2.nodes.state_manager import main
-from exp_assignment2.ros.ending import run_until_shutdown
+import signal
+
+# until rospy.init_node takes SIGINT over: roslaunch ending the launch while
+# this node starts ends it quietly, not with a traceback from an import
+signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+from exp_assignment2.nodes.state_manager import main  # noqa: E402
+from exp_assignment2.ros.ending import run_until_shutdown  # noqa: E402
 
 run_until_shutdown(main)

@@ -97,6 +97,7 @@ def test_sleep_goes_to_the_kennel_rests_sleep_time_and_wakes():
     assert world.goals[0].target == arena.KENNEL
     assert math.hypot(world.x - 7.0, world.y - 7.0) < 0.11
     assert clock.now() - arrived[0] == pytest.approx(14.0, abs=0.06)
+    assert 'SLEEP: resting 14 s' in dog.log.text()
     assert world.servo is None, 'the ball is ignored while asleep'
 
 

@@ -1,9 +1,26 @@
 """How nodes end (ros/ending.py): an error caused by the shutdown is dropped,
 any other is raised, and the process leaves with the right code."""
+import glob
+import os
+import signal
+import socket
+import subprocess
+import sys
+import time
+
 import pytest
 
 rospy = pytest.importorskip('rospy')
 from exp_assignment2.ros import ending  # noqa: E402
+
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(('localhost', 0))
+        return s.getsockname()[1]
 
 
 class Left(Exception):
@@ -55,15 +72,50 @@ def test_a_start_interrupted_by_the_end_of_the_launch_leaves_with_0(exits, monke
     assert leave_code(start) == 0
 
 
-def test_every_node_script_runs_its_main_here():
-    import glob
-    import os
-    scripts = os.path.join(os.path.dirname(__file__), '..', '..', 'scripts')
-    nodes = os.path.join(os.path.dirname(ending.__file__), '..', 'nodes')
-    for path in sorted(glob.glob(os.path.join(scripts, '*.py'))):
-        name = os.path.basename(path)
-        with open(os.path.join(nodes, name)) as f:
-            if 'rospy' not in f.read():
-                continue
-        with open(path) as f:
-            assert f.read().rstrip().endswith('run_until_shutdown(main)'), name
+NODE_SCRIPTS = sorted(
+    path for path in glob.glob(os.path.join(REPO, 'scripts', '*.py'))
+    if 'rospy' in open(os.path.join(REPO, 'src', 'exp_assignment2', 'nodes',
+                                    os.path.basename(path))).read())
+
+
+def catches_sigint(pid):
+    with open('/proc/%d/status' % pid) as f:
+        mask = next(int(line.split()[1], 16) for line in f if line.startswith('SigCgt:'))
+    return bool(mask & (1 << (signal.SIGINT - 1)))
+
+
+def end_while_starting(script, phases, tmp_path):
+    """Start ``script`` with no master, wait until SIGINT's handling has
+    changed as ``phases`` says (Python's handler, the script's default, rospy's
+    in init_node), send SIGINT: (exit code, output)."""
+    env = dict(os.environ, ROS_MASTER_URI='http://localhost:%d' % free_port(),
+               ROS_HOME=str(tmp_path))
+    proc = subprocess.Popen([sys.executable, script], stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, env=env, universal_newlines=True)
+    try:
+        for caught in phases:
+            deadline = time.monotonic() + 20.0
+            while catches_sigint(proc.pid) != caught:
+                assert time.monotonic() < deadline and proc.poll() is None, script
+                time.sleep(0.001)
+        proc.send_signal(signal.SIGINT)
+        out, _ = proc.communicate(timeout=30)
+    finally:
+        proc.kill()
+    return proc.returncode, out
+
+
+@pytest.mark.parametrize('script', NODE_SCRIPTS, ids=os.path.basename)
+def test_a_node_ended_while_it_imports_ends_quietly(script, tmp_path):
+    """roslaunch ends a launch (SIGINT) while a node still imports."""
+    code, out = end_while_starting(script, (True, False), tmp_path)
+    assert 'Traceback' not in out, out
+    assert code == -signal.SIGINT, (code, out)
+
+
+def test_a_node_ended_in_init_node_ends_quietly(tmp_path):
+    """... or waits in init_node for its master: rospy's handler has it."""
+    script = os.path.join(REPO, 'scripts', 'state_machine.py')
+    code, out = end_while_starting(script, (True, False, True), tmp_path)
+    assert 'Traceback' not in out, out
+    assert code == 0, (code, out)

@@ -120,6 +120,7 @@ class Sleep(smach.State):
             goal.cancel()
             dog.log.warn('SLEEP: the kennel was not reached; sleeping here')
         dog.body.stop()
+        dog.log.info('SLEEP: resting %g s', p.sleep_time)
         return 'wake' if clock.sleep(p.sleep_time) else 'shutdown'
 
 
