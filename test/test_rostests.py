@@ -4,8 +4,9 @@ The scenario-A ones run once per robot model (``robot_model:=rep103`` and
 ``original``). A launch file that says ``<!-- run in original-env -->`` (code
 written for the original, with its smach, tabs and Python 2 habits) runs
 inside ``tools/original_env/shell.sh``, as a user would run it. They run one
-after another: they share the two cores, and the simulator runs as fast as it
-can in each. A failing rostest shows the tail of its output here.
+after another in each pytest-xdist worker (tools/run test runs three); the
+simulator runs as fast as it can in each, up to 20x. A failing rostest shows
+the checks that failed and the tail of its output here.
 """
 import glob
 import os
@@ -26,6 +27,20 @@ CASES = [(t, []) for t in TESTS] + [(t, ['robot_model:=original']) for t in TEST
                                     if t in BOTH_MODELS]
 
 
+def failures(output):
+    """The unittest blocks of the checks that failed (FAIL: or ERROR: up to the
+    next rule), which the output's tail may have left out."""
+    lines, keep, out = output.splitlines(), False, []
+    for line in lines:
+        if line.startswith(('FAIL: ', 'ERROR: ')):
+            keep = True
+        elif line.startswith('-' * 20) and keep and out and out[-1].strip() == '':
+            keep = False
+        if keep:
+            out.append(line)
+    return out[:80] + (['...'] if out else [])
+
+
 @pytest.mark.parametrize('launch,args', CASES,
                          ids=[' '.join([t] + a) for t, a in CASES])
 def test_rostest(launch, args, tmp_path):
@@ -39,6 +54,6 @@ def test_rostest(launch, args, tmp_path):
     proc = subprocess.run(command,
                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, env=env,
                           timeout=600, universal_newlines=True)
-    tail = '\n'.join(proc.stdout.splitlines()[-60:])
+    tail = '\n'.join(failures(proc.stdout) + proc.stdout.splitlines()[-60:])
     assert proc.returncode == 0, 'rostest %s failed:\n%s' % (' '.join([launch] + args), tail)
     assert 'SUMMARY' in proc.stdout and 'RESULT: SUCCESS' in proc.stdout, tail

@@ -49,12 +49,12 @@ def test_a_body_that_returns_leaves_with_0(exits):
 
 
 def test_an_error_during_shutdown_is_the_end_not_an_error(exits, monkeypatch):
-    monkeypatch.setattr(ending.rospy, 'is_shutdown', lambda: True)
+    monkeypatch.setattr(ending.rospy.core, 'is_shutdown_requested', lambda: True)
     assert leave_code(fail) == 0
 
 
 def test_an_error_while_running_is_raised(exits, monkeypatch):
-    monkeypatch.setattr(ending.rospy, 'is_shutdown', lambda: False)
+    monkeypatch.setattr(ending.rospy.core, 'is_shutdown_requested', lambda: False)
     with pytest.raises(rospy.ROSException):
         ending.run_until_shutdown(fail)
 
@@ -68,7 +68,7 @@ def test_system_exit_keeps_its_code(exits):
 def test_a_start_interrupted_by_the_end_of_the_launch_leaves_with_0(exits, monkeypatch):
     def start():
         raise rospy.exceptions.ROSInitException('init_node interrupted before it could complete')
-    monkeypatch.setattr(ending.rospy, 'is_shutdown', lambda: True)
+    monkeypatch.setattr(ending.rospy.core, 'is_shutdown_requested', lambda: True)
     assert leave_code(start) == 0
 
 

@@ -51,7 +51,7 @@ class CommandPublisher(object):
         try:
             self.pub.publish(twist)
         except rospy.ROSException:
-            if not rospy.is_shutdown():   # a frame arriving while the node stops: no trace
+            if not rospy.core.is_shutdown_requested():   # a frame while the node stops
                 raise
 
     def _hold(self, _event):

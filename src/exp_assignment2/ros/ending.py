@@ -24,7 +24,9 @@ def run_until_shutdown(body):
     try:
         body()
     except Exception:
-        if not rospy.is_shutdown():
+        # requested, not is_shutdown(): a publish during roslaunch's shutdown was
+        # seen to raise 'topic was closed' while is_shutdown() was still False
+        if not rospy.core.is_shutdown_requested():
             raise
     except SystemExit as stop:
         code = stop.code if isinstance(stop.code, int) else 1
