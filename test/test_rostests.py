@@ -1,7 +1,7 @@
 """Runs every rostest launch file in test/ (each starts its own master).
 
-The scenario-A ones run once per robot model (``robot_model:=rep103`` and
-``original``). A launch file that says ``<!-- run in original-env -->`` (code
+The ones the turn sign changes run once per robot model
+(``robot_model:=rep103`` and ``original``). A launch file that says ``<!-- run in original-env -->`` (code
 written for the original, with its smach, tabs and Python 2 habits) runs
 inside ``tools/original_env/shell.sh``, as a user would run it. They run one
 after another in each pytest-xdist worker (tools/run test runs three); the
@@ -19,8 +19,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 NOT_ALONE = ('student_package.test',)
 TESTS = sorted(os.path.basename(t) for t in glob.glob(os.path.join(HERE, '*.test'))
                if os.path.basename(t) not in NOT_ALONE)
-BOTH_MODELS = ('simulator.test', 'dog_play.test', 'dog_sleep.test', 'dog_preempt.test',
-               'robot_to_ball.test')
+# what the turn sign changes: driving, following the ball, the play around it
+# (dog_sleep and dog_preempt add nothing turn-related to these and the
+# original_* tests, and run once)
+BOTH_MODELS = ('simulator.test', 'dog_play.test', 'robot_to_ball.test')
 ORIGINAL_ENV_MARK = '<!-- run in original-env -->'
 SHELL = os.path.join(os.path.dirname(HERE), 'tools', 'original_env', 'shell.sh')
 CASES = [(t, []) for t in TESTS] + [(t, ['robot_model:=original']) for t in TESTS
