@@ -58,7 +58,8 @@ class TestRobustness(unittest.TestCase):
         # the subscriber keeps 100 and ROS drops the rest when it falls behind
         # (how many depends on the machine's load): what arrived is counted
         self.assertGreater(counted, 0, 'the held-back refusals are counted')
-        self.assertLessEqual(counted + len(lines), BURST + 1)
+        printed = [m for m in lines if 'more refused' not in m.msg]
+        self.assertLessEqual(counted + len(printed), BURST + 1)
 
     def test_2_huge_velocities_cannot_break_a_body_and_a_goal_still_succeeds(self):
         huge = Twist()
