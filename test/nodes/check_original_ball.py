@@ -23,7 +23,7 @@ import rostest
 from actionlib_msgs.msg import GoalStatus
 from sensor_msgs.msg import CompressedImage
 
-from checks import Pose, clock, wait_until
+from checks import Pose, clock, finished, wait_until
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 
@@ -94,7 +94,7 @@ class TestOriginalBall(unittest.TestCase):
         """Send the ball to IN_FRONT at height z; the detections in the frames
         stamped after the goal succeeded."""
         self.client.send_goal(make_goal(IN_FRONT[0], IN_FRONT[1], z))
-        self.assertTrue(self.client.wait_for_result(rospy.Duration(30)), 'z = %g: no result' % z)
+        self.assertTrue(finished(self.client, 30.0), 'z = %g: no result' % z)
         state = self.client.get_state()
         self.assertEqual(state, GoalStatus.SUCCEEDED, 'z = %g: the goal ended %s (%s)' % (
             z, STATES.get(state, state), self.client.get_goal_status_text()))

@@ -34,11 +34,26 @@ def clock():
     return _clock
 
 
+# a window of ROS time lasts at least as long as at this many times real time
+FASTEST = 5.0
+
+
 def wait_until(predicate, ros_seconds):
     """True once ``predicate()`` holds, False after ``ros_seconds`` of ROS time
-    (counted once ROS time runs)."""
+    (counted once ROS time runs) and at least ``ros_seconds / FASTEST`` of
+    wall time: at real_time_factor 0 (up to 20x) a node that waits a tenth of
+    a wall second for its CPU on a loaded machine is two simulated seconds
+    late, and a window sized for the behaviour must not also have to cover
+    that. To check that something does not happen within a window of ROS
+    time, use ``clock().wait_until`` (exact)."""
     clock().wait_for_time()
-    return clock().wait_until(predicate, ros_seconds)
+    wall_end = time.monotonic() + ros_seconds / FASTEST
+    if clock().wait_until(predicate, ros_seconds):
+        return True
+    while time.monotonic() < wall_end:
+        if clock().wait_until(predicate, 0.1):
+            return True
+    return False
 
 
 def eventually(predicate, ros_seconds=10.0, wall_seconds=10.0):
