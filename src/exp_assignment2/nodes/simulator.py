@@ -12,6 +12,7 @@ its name (``/gazebo/...``): see :mod:`exp_assignment2.ros.gazebo_world`,
 """
 import os
 import threading
+import time
 
 import rospkg
 import rospy
@@ -25,11 +26,12 @@ from exp_assignment2.ros.world_markers import WorldMarkers
 from exp_assignment2.sim.engine import Engine
 from exp_assignment2.sim.plugins import registry
 from exp_assignment2.sim.world import parse_model, parse_world
-from exp_assignment2.ros.clock_watch import watch_clock
+from exp_assignment2.ros.clock_watch import own_clock, watch_clock
 from exp_assignment2.sim.limits import check_node_params
 from exp_assignment2.sim.pacing import MAX_REAL_TIME_FACTOR
 
 # The node's own parameters; every other ~ parameter is the world's.
+CLOCK_WALL_PERIOD = 0.001     # s of wall time: /clock at most 1000 times a second
 NODE_PARAMS = {'real_time_factor': 1.0, 'max_real_time_factor': MAX_REAL_TIME_FACTOR,
                'time_step': 0.01, 'renderer': 'gl', 'paused': False,
                'cmd_timeout': 0.5, 'max_linear': 2.0, 'max_angular': 3.0,
@@ -78,6 +80,8 @@ class SimulatorNode(object):
                           max_angular=float(p['max_angular']), camera=camera,
                           jpeg_quality=int(p['jpeg_quality'])))
         self.clock_pub = rospy.Publisher('/clock', Clock, queue_size=10)
+        self.set_time = own_clock()                 # this node's ROS time, without /clock
+        self.clock_wall, self.clock_ns = -CLOCK_WALL_PERIOD, -1
         watch_clock(lambda: self.engine.time)      # an ERROR naming a second /clock publisher
         self.engine.step_listeners.append(lambda engine: self.publish_clock())
         hidden = set(p['hidden'] or [])
@@ -135,9 +139,18 @@ class SimulatorNode(object):
         with open(path) as f:
             return f.read()
 
-    def publish_clock(self):
+    def publish_clock(self, always=False):
+        """/clock after a step: every step, but at most one a millisecond of
+        wall time (``always``: now, as when the world stops). Faster than that
+        no node can react to a tick anyway, and every node receives every
+        /clock: at 20x, 2000 messages a wall second each."""
         ns = self.engine.time_ns
-        self.clock_pub.publish(Clock(clock=rospy.Time(ns // 1000000000, ns % 1000000000)))
+        now = rospy.Time(ns // 1000000000, ns % 1000000000)
+        self.set_time(now)
+        wall = time.monotonic()
+        if always or wall - self.clock_wall >= CLOCK_WALL_PERIOD or ns < self.clock_ns:
+            self.clock_wall, self.clock_ns = wall, ns
+            self.clock_pub.publish(Clock(clock=now))
 
     def cameras(self):
         return [pl for pls in self.engine.plugins.values() for pl in pls
@@ -160,10 +173,10 @@ class SimulatorNode(object):
                           timeout)
 
     def spin(self):
-        self.publish_clock()
+        self.publish_clock(always=True)
         if self.params['wait_for_camera']:
             self.wait_for_camera(float(self.params['start_timeout']))
-        self.engine.run(idle=self.publish_clock)
+        self.engine.run(idle=lambda: self.publish_clock(always=True))
 
     def close(self):
         self.state.close()
