@@ -24,6 +24,7 @@ the renderers' side-by-side picture (``--picture``). It starts its own roscore
 import argparse
 import datetime
 import json
+import math
 import os
 import platform
 
@@ -101,7 +102,10 @@ def frame_costs(results):
 
 
 def ratio(value, base):
-    return '  (%.2fx the baseline\'s %.2f)' % (value / base, base) if base else ''
+    """The ratio to the baseline's figure; nothing when it has none."""
+    if not base or not math.isfinite(base):
+        return ''
+    return '  (%.2fx the baseline\'s %.2f)' % (value / base, base)
 
 
 def table(results, baseline=None):
