@@ -100,7 +100,10 @@ class SimulatorNode(object):
             raise
         self.world = GazeboWorld(self.engine, sdf_to_urdf=sdf_to_urdf)
         self.state = GazeboState(self.engine, self.world)
-        self.markers = WorldMarkers(self.engine)
+        # an SDF world (gazebo_ros' gzserver) is drawn in Gazebo's frame, as
+        # gzclient shows it; the package's worlds in odom, as its rviz configs
+        self.markers = WorldMarkers(self.engine,
+                                    'world' if p['world_file'] is not None else 'odom')
         pacer = self.engine.pacer
         rospy.loginfo('simulator: %d models, step %.4f s, real_time_factor %g%s%s',
                       len(self.engine.models), self.engine.time_step, pacer.rtf,
