@@ -23,7 +23,7 @@ import rostest
 from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import Twist
 
-from checks import Pose, Watch, clock, wait_until
+from checks import Pose, Watch, clock, finished, wait_until
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 
@@ -107,7 +107,7 @@ class TestOriginalFollower(unittest.TestCase):
         self.assertTrue(self.ball_server.wait_for_server(rospy.Duration(30)))
         moved = rospy.get_time()
         self.ball_server.send_goal(make_goal(BALL_GOAL[0], BALL_GOAL[1], 0.5))
-        self.assertTrue(self.ball_server.wait_for_result(rospy.Duration(30)))
+        self.assertTrue(finished(self.ball_server, 30.0))
         self.assertEqual(self.ball_server.get_state(), GoalStatus.SUCCEEDED)
         arrived = rospy.get_time()
         print('[check_original_follower] the ball reached %s %.1f s after the goal'

@@ -93,7 +93,7 @@ class TestPlanningAction(unittest.TestCase):
         self.assertTrue(finished(second, 10.0))
         self.assertEqual(second.get_state(), GoalStatus.REJECTED)
         self.assertIn('not finite', second.get_goal_status_text())
-        self.assertTrue(self.robot.wait_for_result(rospy.Duration(120)))
+        self.assertTrue(finished(self.robot, 120.0))
         self.assertEqual(self.robot.get_state(), GoalStatus.SUCCEEDED,
                          self.robot.get_goal_status_text())
 
@@ -105,7 +105,7 @@ class TestPlanningAction(unittest.TestCase):
         before = len(self.rosout.lines(node='/go_to_point_ball'))
         for _ in range(50):
             cancel.publish(GoalID(id='no-such-goal'))
-        self.assertTrue(self.ball.wait_for_result(rospy.Duration(60)))
+        self.assertTrue(finished(self.ball, 60.0))
         self.assertEqual(self.ball.get_state(), GoalStatus.SUCCEEDED)
         time.sleep(2.5)          # the count of the held-back refusals comes a second later
         lines = [m.msg for m in self.rosout.lines(node='/go_to_point_ball')[before:]]
@@ -124,7 +124,7 @@ class TestPlanningAction(unittest.TestCase):
                         'ROS time did not go back (%.2f s before the reset)' % before)
         rospy.loginfo('reset_simulation at %.2f s of ROS time; now %.2f s', before,
                       rospy.get_time())
-        self.assertTrue(self.robot.wait_for_result(rospy.Duration(120)))
+        self.assertTrue(finished(self.robot, 120.0))
         self.assertEqual(self.robot.get_state(), GoalStatus.SUCCEEDED,
                          self.robot.get_goal_status_text())
         self.robot_pose.next()

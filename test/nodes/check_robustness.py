@@ -15,8 +15,8 @@ from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import Twist
 from std_msgs.msg import String
 
-from checks import (DogObserver, clock, eventually, kill_node, node_pid, wait_for_subscribers,
-                    wait_until)
+from checks import (DogObserver, clock, eventually, finished, kill_node, node_pid,
+                    wait_for_subscribers)
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 
@@ -75,7 +75,7 @@ class TestRobustness(unittest.TestCase):
             self.assertTrue(all(math.isfinite(v) for v in (p.x, p.y, p.z)))
             self.assertTrue(abs(p.x) < 9.3 and abs(p.y) < 9.3, (p.x, p.y))
         self.ball.send_goal(make_goal(2.0, 3.0, 0.5))
-        self.assertTrue(self.ball.wait_for_result(rospy.Duration(60)))
+        self.assertTrue(finished(self.ball, 60.0))
         self.assertEqual(self.ball.get_state(), GoalStatus.SUCCEEDED)
 
     def test_3_a_node_killed_late_comes_back_and_works(self):
