@@ -45,8 +45,9 @@ class TestDogPlay(DogCheck):
         took = self.dog.logged('NORMAL', hidden_at)[0] - hidden_at
         rospy.loginfo('NORMAL %.1f s after hiding the ball', took)
         # the timeout counts from the last frame that showed the ball, which may
-        # be before the hiding (the head sweep looks away)
-        self.assertTrue(0.0 < took <= LOST_TIMEOUT + 5.0, took)
+        # be before the hiding (the head sweep looks away); the frames reach
+        # the state machine later on a loaded machine, at 20x many simulated s
+        self.assertTrue(0.0 < took <= LOST_TIMEOUT + 15.0, took)
 
 
 if __name__ == '__main__':

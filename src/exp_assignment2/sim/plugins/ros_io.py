@@ -25,6 +25,12 @@ class Watched(rospy.SubscribeListener):
         rospy.SubscribeListener.__init__(self)
         self.on_change, self.count = on_change, 0
         self.pub = rospy.Publisher(topic, cls, queue_size=1, subscriber_listener=self)
+        # a subscriber that connected as rospy registered the topic, before it
+        # knew of this listener, brought no event (the camera then never drew
+        # for a state machine that was already waiting): count it now
+        self.count = max(self.count, self.pub.get_num_connections())
+        if self.count and self.on_change is not None:
+            self.on_change()
 
     def peer_subscribe(self, topic_name, topic_publish, peer_publish):
         pub = getattr(self, 'pub', None)     # a subscriber may come before the assignment
