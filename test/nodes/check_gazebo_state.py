@@ -69,6 +69,7 @@ class TestGazeboState(unittest.TestCase):
                                    and abs(self.ball.msg.pose.pose.position.y - 2.0) < 1e-3, 5.0))
 
     def test_4_bad_states_are_refused_with_one_line(self):
+        time.sleep(1.1)       # a refusal of the tests before is out of the throttle's second
         state = ModelState(model_name='ball')
         state.pose.position.x = float('nan')
         answer = self.srv['set_model_state'](state)

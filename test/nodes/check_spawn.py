@@ -16,7 +16,7 @@ from rosgraph_msgs.msg import Log
 from sensor_msgs.msg import CameraInfo, Image, JointState
 from std_msgs.msg import Float64
 
-from checks import Rosout, Watch, clock, wait_for_subscribers, wait_until
+from checks import Rosout, Watch, clock, eventually, wait_for_subscribers, wait_until
 from exp_assignment2.geometry import yaw_of
 
 FIXTURES = os.path.join(rospkg.RosPack().get_path('exp_assignment2'), 'test', 'fixtures')
@@ -67,6 +67,9 @@ class TestSpawn(unittest.TestCase):
         q = msg.pose.pose.orientation
         self.assertAlmostEqual(yaw_of((q.x, q.y, q.z, q.w)), 0.5, delta=0.02)
         self.assertEqual((msg.header.frame_id, msg.child_frame_id), ('odom', 'base_link'))
+        # /rosout reaches this checker some wall time after the answer
+        eventually(lambda: self.rosout.lines('libgazebo_ros_bumper.so', Log.WARN)
+                   and self.rosout.lines('not_a_joint_controller', Log.WARN))
         warnings = [m.msg for m in self.rosout.lines('libgazebo_ros_bumper.so', Log.WARN)]
         self.assertEqual(len(warnings), 1, warnings)
         controller = self.rosout.lines('not_a_joint_controller', Log.WARN)
