@@ -1,12 +1,13 @@
 """Runs every rostest launch file in test/ (each starts its own master).
 
 The ones the turn sign changes run once per robot model
-(``robot_model:=rep103`` and ``original``). A launch file that says ``<!-- run in original-env -->`` (code
-written for the original, with its smach, tabs and Python 2 habits) runs
-inside ``tools/original_env/shell.sh``, as a user would run it. They run one
-after another in each pytest-xdist worker (tools/run test runs three); the
-simulator runs as fast as it can in each, up to 20x. A failing rostest shows
-the checks that failed and the tail of its output here.
+(``robot_model:=rep103`` and ``original``). A launch file that says
+``<!-- run in original-env -->`` (code written for the original, with its
+smach, tabs and Python 2 habits) runs inside ``tools/original_env/shell.sh``,
+as a user would run it. They run one after another in each pytest-xdist
+worker (tools/run test runs three); the simulator runs as fast as it can in
+each, up to 20x. A failing rostest shows the checks that failed and the tail
+of its output here.
 """
 import glob
 import os

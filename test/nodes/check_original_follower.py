@@ -1,18 +1,20 @@
 #!/usr/bin/env python3
-"""Does the original assignment's follower (test/original/robot_to_ball_original.py,
-seed 000's robot_to_ball.py: angular.z = 0.002*(cx-400), linear.x =
--0.01*(radius-100)), run unmodified against robot_model:=original, bring the
-robot to rest near the ball, facing it?
+"""Does the original assignment's follower
+(test/original/robot_to_ball_original.py, seed 000's robot_to_ball.py:
+angular.z = 0.002*(cx-400), linear.x = -0.01*(radius-100)), run unmodified
+against robot_model:=original, bring the robot to rest near the ball, facing
+it?
 
 Twice: from the spawn pose (ball 2.2 m away, 27 deg to the left: the robot
-must turn left and back off), then after the ball is moved 4.7 m away
-through /reaching_goal (the robot must turn and drive forward). "At rest"
-means the follower's commands stay below 0.01 m/s and 0.01 rad/s for 2 s of
-ROS time (commands that stop coming are not rest). The control law rests where the ball looks 100 px in radius in
-the 800 px image: about 2.7 m from the chassis with the 80 deg camera.
+must turn left and back off), then after the ball is moved 4.7 m away through
+/reaching_goal (the robot must turn and drive forward). "At rest" means the
+follower's commands stay below 0.01 m/s and 0.01 rad/s for 2 s of ROS time
+(commands that stop coming are not rest). The control law rests where the ball
+looks 100 px in radius in the 800 px image: about 2.7 m from the chassis with
+the 80 deg camera.
 
-With a robot that turns the other way (robot_model:=rep103) the follower
-turns away from the ball and never comes to rest facing it: this fails.
+With a robot that turns the other way (robot_model:=rep103) the follower turns
+away from the ball and never comes to rest facing it: this fails.
 """
 import math
 import unittest

@@ -6,7 +6,8 @@ It reads its ``~`` parameters (its own, :data:`NODE_PARAMS`, and the world:
 ``config/world_*.yaml`` or an SDF ``~world_file``), spawns the world's models
 (each brings its plugins in its URDF's ``<gazebo>`` tags), publishes
 ``/clock`` after every step (at most once a wall millisecond) and serves
-Gazebo's services and topics under its name (``/gazebo/...``): see :mod:`exp_assignment2.ros.gazebo_world`,
+Gazebo's services and topics under its name (``/gazebo/...``): see
+:mod:`exp_assignment2.ros.gazebo_world`,
 :mod:`exp_assignment2.ros.gazebo_state` and, for rviz,
 :mod:`exp_assignment2.ros.world_markers`.
 """
