@@ -166,6 +166,20 @@ def test_a_link_error_names_the_source_of_the_object(tmp_path):
         '/home/me/upkg/src/n.cpp', "undefined reference to `helper()'")
 
 
+def test_a_compiler_path_relative_to_the_build_directory_is_the_users(tmp_path):
+    # with ccache's base_dir the compiler, run in build/upkg, is given relative paths
+    src = tmp_path / 'src'
+    write(str(src / 'upkg' / 'src' / 'n.cpp'))
+    os.makedirs(str(tmp_path / 'build' / 'upkg'))
+
+    def user(path):
+        prefix = str(src / 'upkg')
+        return '/home/me/upkg' + path[len(prefix):] if path.startswith(prefix + '/') else None
+    log = "../../src/upkg/src/n.cpp:17:17: error: 'centre' was not declared in this scope\n"
+    assert build_errors.first_error(log, user, str(src)) == (
+        '/home/me/upkg/src/n.cpp:17', "'centre' was not declared in this scope")
+
+
 def test_anything_else_gives_the_first_line_saying_error():
     assert first('ok\nmake: *** [all] Error 2\n') == (None, 'make: *** [all] Error 2')
     assert first('all fine\n') is None

@@ -121,7 +121,10 @@ class Overlay:
         prefix = self.give_stand_ins()
         log('building %s in %s (full log: %s)' % (self.package_dir, self.path, self.log_path))
         env = dict(os.environ, CMAKE_PREFIX_PATH=os.pathsep.join(
-            p for p in (prefix, os.environ.get('CMAKE_PREFIX_PATH')) if p))
+            p for p in (prefix, os.environ.get('CMAKE_PREFIX_PATH')) if p),
+                   # paths inside the overlay are hashed as relative ones: the
+                   # same package in another place hits the cache
+                   CCACHE_BASEDIR=self.path, CCACHE_NOHASHDIR='1')
         with open(self.log_path, 'w') as out:
             # --force-cmake: genmsg's dependency checks want a new configure
             # when a message changed, and the overlay builds only after changes

@@ -136,9 +136,24 @@ def _package_file(relative, to_user, source_root):
     return relative
 
 
+def _from_build_dir(relative, source_root):
+    """A compiler's path relative to its package's build directory (ccache's
+    base_dir makes them so), in the source space; None if there is none."""
+    if not (source_root and os.path.isdir(source_root)):
+        return None
+    build = os.path.join(os.path.dirname(source_root.rstrip('/')), 'build')
+    for package in sorted(os.listdir(source_root)):
+        candidate = os.path.normpath(os.path.join(build, package, relative))
+        if os.path.exists(candidate):
+            return candidate
+    return None
+
+
 def _where(path, line, to_user, source_root, keep_outside=True):
     full = path
-    if source_root and not path.startswith('/'):
+    if path.startswith('../'):
+        full = _from_build_dir(path, source_root) or path
+    elif source_root and not path.startswith('/'):
         full = source_root.rstrip('/') + '/' + path
     user = to_user(full)
     if user is None and not keep_outside:
