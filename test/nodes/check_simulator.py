@@ -11,6 +11,7 @@ import rostest
 import tf2_ros
 from gazebo_msgs.msg import LinkState
 from geometry_msgs.msg import Twist
+from nav_msgs.msg import Odometry
 from rosgraph_msgs.msg import Log
 from sensor_msgs.msg import CameraInfo, CompressedImage, Image, JointState
 from std_msgs.msg import Float64
@@ -74,6 +75,27 @@ class TestSimulator(unittest.TestCase):
     def pose(self):
         self.odom.next()
         return self.odom.xyzyaw()
+
+    def test_odometry_and_camera_keep_their_rates_in_simulated_time(self):
+        # what hztest measured, without a launch of its own for each rate:
+        # messages published per simulated second, from sequence numbers and
+        # stamps (one dropped on its way on a loaded machine is not a lower rate)
+        streams = {'/robot/odom': (Odometry, float(rospy.get_param('~odom_hz'))),
+                   '/robot/camera1/image_raw/compressed': (CompressedImage, 30.0)}
+        watches = {topic: Watch(topic, cls, keep=True) for topic, (cls, _) in streams.items()}
+        try:
+            start = rospy.get_time()
+            self.assertTrue(wait_until(lambda: all(
+                w.all and w.all[-1].header.stamp.to_sec() - start >= 5.0
+                for w in watches.values()), 30.0), 'not 5 s of both streams')
+            for topic, (_, hz) in streams.items():
+                first, last = watches[topic].all[0].header, watches[topic].all[-1].header
+                rate = (last.seq - first.seq) / (last.stamp.to_sec() - first.stamp.to_sec())
+                rospy.loginfo('%s at %.2f Hz of simulated time', topic, rate)
+                self.assertAlmostEqual(rate, hz, delta=0.5, msg=topic)
+        finally:
+            for watch in watches.values():
+                watch.sub.unregister()
 
     def test_camera_sees_the_ball_in_front(self):
         ball = ball_in(self.image.next())
