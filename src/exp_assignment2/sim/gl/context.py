@@ -12,6 +12,19 @@ import threading
 EGL_DRAW, EGL_READ = 0x3059, 0x305A
 
 
+def _gl_finish():
+    """glFinish of libglvnd's dispatch (to the thread's current context), or None."""
+    for library in ('libOpenGL.so.0', 'libGL.so.1'):
+        try:
+            return ctypes.CDLL(library).glFinish    # ctypes releases the GIL in the call
+        except (OSError, AttributeError):
+            pass
+    return None
+
+
+_GL_FINISH = _gl_finish()
+
+
 def one_line(exc):
     """An exception's message on one line (its type name if it has none)."""
     return ' '.join(str(exc).split()) or type(exc).__name__
@@ -80,6 +93,13 @@ class GLContext(object):
             yield self.ctx
         finally:
             self._egl.restore(saved)
+
+    def finish(self):
+        """Wait for the drawing to be done without holding Python's GIL: Mesa
+        rasterises when the image is read, and moderngl holds the GIL while it
+        reads; through ctypes the simulator's other thread steps meanwhile."""
+        if _GL_FINISH is not None:
+            _GL_FINISH()
 
     def release(self):
         """Release the context itself (its objects first, by the caller)."""

@@ -174,6 +174,7 @@ class GLRenderer(object):
         skip = self.description.hidden_slots(hidden) if hidden else ()
         with self.gl.current():
             self._draw(poses, vp.T.astype(np.float32).tobytes(), skip)   # GL is column-major
+            self.gl.finish()
             image = self._image if out is None else out
             if self._cvt is None:
                 self.read_fbo.read_into(image, components=3, alignment=1)
