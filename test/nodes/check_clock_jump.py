@@ -9,7 +9,6 @@ import math
 import time
 import unittest
 
-import actionlib
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
@@ -17,7 +16,7 @@ from geometry_msgs.msg import Twist
 from rosgraph_msgs.msg import Clock, Log
 from std_srvs.srv import Empty
 
-from checks import DogObserver, Watch, clock, finished, node_pid, wait_until
+from checks import DogObserver, SimpleClient, Watch, clock, finished, node_pid, wait_until
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 
@@ -34,7 +33,7 @@ class TestClockJump(unittest.TestCase):
         cls.dog = DogObserver()
         cls.rosout = cls.dog.rosout
         cls.cmd = Watch('/robot/cmd_vel', Twist, keep=True)
-        cls.ball = actionlib.SimpleActionClient('/reaching_goal', PlanningAction)
+        cls.ball = SimpleClient('/reaching_goal', PlanningAction)
         assert cls.ball.wait_for_server(rospy.Duration(60))
         cls.stray = rospy.Publisher('/clock', Clock, queue_size=10)
 

@@ -15,7 +15,6 @@ A ball that is not lifted (or lifted but still in view) fails this.
 import threading
 import unittest
 
-import actionlib
 import cv2
 import numpy as np
 import rospy
@@ -23,7 +22,7 @@ import rostest
 from actionlib_msgs.msg import GoalStatus
 from sensor_msgs.msg import CompressedImage
 
-from checks import Pose, clock, finished, wait_until
+from checks import Pose, SimpleClient, clock, finished, wait_until
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 
@@ -87,7 +86,7 @@ class TestOriginalBall(unittest.TestCase):
         clock().wait_for_time()
         cls.ball = Pose('/ball/odom')
         cls.frames = Frames('/robot/camera1/image_raw/compressed')
-        cls.client = actionlib.SimpleActionClient('/reaching_goal', PlanningAction)
+        cls.client = SimpleClient('/reaching_goal', PlanningAction)
         assert cls.client.wait_for_server(rospy.Duration(60)), 'no /reaching_goal'
 
     def ball_goal(self, z):

@@ -19,13 +19,12 @@ away from the ball and never comes to rest facing it: this fails.
 import math
 import unittest
 
-import actionlib
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import Twist
 
-from checks import Pose, Watch, clock, finished, wait_until
+from checks import Pose, SimpleClient, Watch, clock, finished, wait_until
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 
@@ -70,7 +69,7 @@ class TestOriginalFollower(unittest.TestCase):
         clock()
         cls.robot, cls.ball = Pose('/robot/odom'), Pose('/ball/odom')
         cls.cmd = FollowerCommands()
-        cls.ball_server = actionlib.SimpleActionClient('/reaching_goal', PlanningAction)
+        cls.ball_server = SimpleClient('/reaching_goal', PlanningAction)
 
     def geometry(self):
         """(distance, bearing) of the ball from the robot."""

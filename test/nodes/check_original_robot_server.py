@@ -13,12 +13,11 @@ arrives and this fails.
 import math
 import unittest
 
-import actionlib
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
 
-from checks import Pose, clock, wait_until
+from checks import Pose, SimpleClient, clock, wait_until
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 
@@ -32,7 +31,7 @@ class TestOriginalRobotServer(unittest.TestCase):
         rospy.init_node('check_original_robot_server')
         clock().wait_for_time()
         cls.robot = Pose('/robot/odom')
-        cls.client = actionlib.SimpleActionClient('/robot_reaching_goal', PlanningAction)
+        cls.client = SimpleClient('/robot_reaching_goal', PlanningAction)
         assert cls.client.wait_for_server(rospy.Duration(60)), 'no /robot_reaching_goal'
         assert wait_until(lambda: cls.robot.msg is not None, 10.0), 'no /robot/odom'
 

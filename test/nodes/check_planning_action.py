@@ -8,14 +8,13 @@ import math
 import time
 import unittest
 
-import actionlib
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalID, GoalStatus
 from rosgraph_msgs.msg import Log
 from std_srvs.srv import Empty
 
-from checks import Pose, Rosout, clock, finished, wait_for_subscribers, wait_until
+from checks import Pose, Rosout, SimpleClient, clock, finished, wait_for_subscribers, wait_until
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 
@@ -27,8 +26,8 @@ class TestPlanningAction(unittest.TestCase):
     def setUpClass(cls):
         rospy.init_node('check_planning_action')
         clock()
-        cls.robot = actionlib.SimpleActionClient('/robot_reaching_goal', PlanningAction)
-        cls.ball = actionlib.SimpleActionClient('/reaching_goal', PlanningAction)
+        cls.robot = SimpleClient('/robot_reaching_goal', PlanningAction)
+        cls.ball = SimpleClient('/reaching_goal', PlanningAction)
         assert cls.robot.wait_for_server(rospy.Duration(60))
         assert cls.ball.wait_for_server(rospy.Duration(60))
         cls.robot_pose, cls.ball_pose = Pose('/robot/odom'), Pose('/ball/odom')
@@ -85,7 +84,7 @@ class TestPlanningAction(unittest.TestCase):
             time.sleep(1.1)          # refusals are throttled to one line a wall second
 
     def test_a_refused_goal_leaves_the_goal_under_way_alone(self):
-        second = actionlib.SimpleActionClient('/robot_reaching_goal', PlanningAction)
+        second = SimpleClient('/robot_reaching_goal', PlanningAction)
         self.assertTrue(second.wait_for_server(rospy.Duration(30)))
         self.robot.send_goal(make_goal(-5.0, 3.0))
         clock().sleep(3.0)

@@ -8,15 +8,14 @@ import re
 import time
 import unittest
 
-import actionlib
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import Twist
 from std_msgs.msg import String
 
-from checks import (DogObserver, clock, eventually, finished, kill_node, node_pid,
-                    wait_for_subscribers)
+from checks import (DogObserver, SimpleClient, clock, eventually, finished, kill_node,
+                    node_pid, wait_for_subscribers)
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 
@@ -33,7 +32,7 @@ class TestRobustness(unittest.TestCase):
         cls.command = rospy.Publisher('/ball/command', String, queue_size=BURST + 10)
         cls.robot_cmd = rospy.Publisher('/robot/cmd_vel', Twist, queue_size=10)
         cls.ball_cmd = rospy.Publisher('/ball/cmd_vel', Twist, queue_size=10)
-        cls.ball = actionlib.SimpleActionClient('/reaching_goal', PlanningAction)
+        cls.ball = SimpleClient('/reaching_goal', PlanningAction)
         assert cls.ball.wait_for_server(rospy.Duration(60))
         for pub in (cls.command, cls.robot_cmd, cls.ball_cmd):
             wait_for_subscribers(pub)

@@ -27,7 +27,13 @@ def rate(watch, seconds=4.0):
     sequence numbers of those that arrive in ``seconds``: late delivery, or a
     message a loaded machine drops on its way, does not count as a lower rate."""
     start = len(watch.all)
-    clock().sleep(seconds)
+
+    def spanned():        # what arrives after now, over ``seconds`` of its own stamps
+        got = watch.all[start:]
+        return len(got) >= 2 and got[-1].header.stamp.to_sec() - got[0].header.stamp.to_sec() \
+            >= seconds
+    assert wait_until(spanned, 10.0 * seconds), '%s: not %g s of messages' % (watch.topic,
+                                                                             seconds)
     first, last = watch.all[start].header, watch.all[-1].header
     return (last.seq - first.seq) / (last.stamp.to_sec() - first.stamp.to_sec())
 

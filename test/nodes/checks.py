@@ -69,6 +69,31 @@ def eventually(predicate, ros_seconds=10.0, wall_seconds=10.0):
             return False
 
 
+class SimpleClient(actionlib.SimpleActionClient):
+    """actionlib's SimpleActionClient without its race: a server that answers
+    before ``send_goal`` has stored the new goal's handle (a ball already where
+    the goal puts it: at once) had its answer dropped ("Got a transition
+    callback on a goal handle that we're not tracking"), and the goal never
+    ended for the client. Storing the handle and handling a transition exclude
+    each other here."""
+
+    def __init__(self, *args, **kwargs):
+        actionlib.SimpleActionClient.__init__(self, *args, **kwargs)
+        self._sending = threading.RLock()
+
+    def send_goal(self, *args, **kwargs):
+        with self._sending:
+            actionlib.SimpleActionClient.send_goal(self, *args, **kwargs)
+
+    def _handle_transition(self, gh):
+        with self._sending:
+            actionlib.SimpleActionClient._handle_transition(self, gh)
+
+    def _handle_feedback(self, gh, feedback):
+        with self._sending:
+            actionlib.SimpleActionClient._handle_feedback(self, gh, feedback)
+
+
 def finished(client, ros_seconds, wall_seconds=10.0):
     """True once the goal of a SimpleActionClient is done: after its result,
     or after ``ros_seconds`` of ROS time and ``wall_seconds`` of wall time (a
