@@ -18,7 +18,8 @@ from std_msgs.msg import Float64
 from std_srvs.srv import Empty
 from visualization_msgs.msg import MarkerArray
 
-from checks import Pose, Rosout, Watch, clock, eventually, wait_for_subscribers, wait_until
+from checks import (Pose, Rosout, Watch, clock, eventually, node_pid, wait_for_subscribers,
+                    wait_until)
 from exp_assignment2.geometry import yaw_of
 from exp_assignment2.sim import urdf
 from exp_assignment2.vision import BallDetector, decode_jpeg
@@ -281,6 +282,12 @@ class TestSimulator(unittest.TestCase):
             self.assertEqual(rospy.get_time(), t0)
         finally:
             self.unpause()
+
+    def test_as_fast_as_possible_leaves_the_other_nodes_their_cpu(self):
+        pid = node_pid('/gazebo')
+        with open('/proc/%d/stat' % pid) as f:
+            nice = int(f.read().rsplit(')', 1)[1].split()[16])
+        self.assertEqual(nice, 5)
 
     def test_the_clock_runs_faster_than_wall_time(self):
         t0, w0 = rospy.get_time(), time.monotonic()
