@@ -59,7 +59,19 @@ class PlanningClient(object):
             if not rospy.is_shutdown():
                 rospy.logwarn('%s: no %s action server yet; still waiting',
                               rospy.get_name(), self.name)
+                self.reconnect()
         return False
+
+    def reconnect(self):
+        """Register the client's five topics afresh. The server counts as up
+        once every one is connected to it, and on a loaded machine rospy once
+        left one unconnected for good ("ready" at 0.27 s, still waited for at
+        185 s); registering again brings every connection back."""
+        old = self.client
+        for topic in (old.pub_goal, old.pub_cancel, old.status_sub, old.result_sub,
+                      old.feedback_sub):
+            topic.unregister()       # first: a topic still held is shared, not renewed
+        self.client = actionlib.ActionClient(self.name, PlanningAction)
 
     def go_to(self, x, y, z=0.0):
         """Send a goal; returns its :class:`ActionGoal`."""
