@@ -107,7 +107,10 @@ class TestPlanningAction(unittest.TestCase):
         self.assertTrue(finished(self.ball, 60.0))
         self.assertEqual(self.ball.get_state(), GoalStatus.SUCCEEDED)
         time.sleep(2.5)          # the count of the held-back refusals comes a second later
-        lines = [m.msg for m in self.rosout.lines(node='/go_to_point_ball')[before:]]
+        # what the server said of the cancels (a loaded machine may add a line
+        # of its own about late odometry)
+        lines = [m.msg for m in self.rosout.lines(node='/go_to_point_ball')[before:]
+                 if 'cancel' in m.msg]
         rospy.loginfo('50 cancels of an unknown goal: %d lines: %s', len(lines), lines)
         self.assertTrue(1 <= len(lines) <= 2, lines)
         self.assertTrue(all(line.startswith('/reaching_goal/cancel: ') for line in lines), lines)
