@@ -1,6 +1,7 @@
-"""The camera's frame worker: frames finish on another thread, in order, one
-hand-over slot at a time; gl that cannot start falls back to tiny with one
-line (no master: rospy only logs)."""
+"""The camera's frame worker: frames are drawn on one thread and published on
+another, in order, one hand-over slot at a time, a frame drawn while the one
+before is published; gl that cannot start falls back to tiny with one line
+(no master: rospy only logs)."""
 import threading
 import time
 
@@ -52,14 +53,14 @@ def spec(size=64):
 
 
 @pytest.mark.parametrize('kind', ['gl', 'tiny'])
-def test_frames_finish_on_the_worker_thread_in_order(engine, kind):
+def test_frames_are_published_on_the_worker_thread_in_order(engine, kind):
     worker, camera = FrameWorker(kind, engine.handle), Recorder()
     for stamp in range(5):
         worker.submit(camera, stamp, worker.backend.capture(spec()))
     worker.close()
     assert [f[0] for f in camera.frames] == list(range(5))
     assert all(shape == (64, 64, 3) and drawn for _, shape, drawn in camera.frames)
-    assert camera.threads == {'camera'}
+    assert camera.threads == {'camera publish'}
     assert worker.backend.name == kind
 
 
@@ -105,3 +106,50 @@ def test_a_hidden_ball_is_not_drawn_by_gl(engine):
     worker.submit(camera, 1, worker.backend.capture(spec(200)))
     worker.close()
     assert seen[0] > 1000 and seen[1] == 0
+
+
+def test_a_frame_is_drawn_while_the_one_before_is_published(engine, monkeypatch):
+    worker, camera = FrameWorker('tiny', engine.handle), Recorder()
+    second_drawn = threading.Event()
+    finish = worker.backend.finish
+
+    def drawing(job):
+        image = finish(job)
+        if len(camera.frames) == 0 and drawing.calls == 1:
+            second_drawn.set()
+        drawing.calls += 1
+        return image
+    drawing.calls = 0
+    monkeypatch.setattr(worker.backend, 'finish', drawing)
+    publish = camera.publish
+
+    def publishing(stamp, bgr):       # the first frame waits for the second's drawing
+        if stamp == 0:
+            assert second_drawn.wait(5), 'the second frame was not drawn meanwhile'
+        publish(stamp, bgr)
+    camera.publish = publishing
+    job = worker.backend.capture(spec())
+    for stamp in range(3):
+        worker.submit(camera, stamp, job)
+    worker.close()
+    assert [f[0] for f in camera.frames] == [0, 1, 2]
+
+
+def test_a_gl_frame_waiting_to_be_published_is_not_drawn_over(engine):
+    worker, camera = FrameWorker('gl', engine.handle), Recorder()
+    release, seen = threading.Event(), []
+
+    def publishing(stamp, bgr):     # holds the first frame while two more are drawn
+        if stamp == 0:
+            release.wait(5)
+        seen.append(int(np.count_nonzero(
+            (bgr[:, :, 1] > 100) & (bgr[:, :, 0] < 60) & (bgr[:, :, 2] < 60))))
+    camera.publish = publishing
+    worker.submit(camera, 0, worker.backend.capture(spec(200)))
+    engine.models['ball'].hidden = True
+    worker.submit(camera, 1, worker.backend.capture(spec(200)))
+    worker.submit(camera, 2, worker.backend.capture(spec(200)))   # drawn, then waits
+    time.sleep(0.2)
+    release.set()
+    worker.close()
+    assert seen[0] > 1000 and seen[1:] == [0, 0]

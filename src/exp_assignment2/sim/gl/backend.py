@@ -6,9 +6,14 @@ models are hidden, and the scene description (rebuilt when models were
 spawned or deleted). finish (camera worker thread, which owns the GL
 context): draw and read back BGR.
 """
+import numpy as np
+
 from exp_assignment2.sim.gl.scene import GLRenderer, SceneReader, empty_description
 
 PROBE_SIZE = 16
+# a frame is drawn while the one before waits for the encoder, which has the
+# one before that (plugins/frame_worker.py)
+BUFFERS = 3
 
 
 class GLBackend(object):
@@ -20,6 +25,7 @@ class GLBackend(object):
         self.source, self.client = source, client
         self.generation, self.reader = None, None
         self.renderers = {}      # (width, height) -> GLRenderer, worker thread only
+        self.buffers = {}        # (width, height) -> the images finish() returns, in turn
 
     def start(self):
         """Open a GL context in this (the worker's) thread; RuntimeError when
@@ -48,11 +54,21 @@ class GLBackend(object):
         return camera, self.reader.read_poses(), hidden, self.reader.description
 
     def finish(self, job):
-        """The BGR image; valid until the next finish() (the buffer is reused)."""
+        """The BGR image; valid until the BUFFERS-th finish() after it (the
+        buffers rotate: one drawn, one waiting, one being encoded)."""
         camera, poses, hidden, description = job
         pose = camera.frame(description.link_pose(poses, camera.model, camera.link))
         return self._renderer(camera.width, camera.height, description).render(
-            poses, pose, hfov_deg=camera.hfov, near=camera.near, far=camera.far, hidden=hidden)
+            poses, pose, hfov_deg=camera.hfov, near=camera.near, far=camera.far, hidden=hidden,
+            out=self._buffer(camera.width, camera.height))
+
+    def _buffer(self, width, height):
+        ring = self.buffers.get((width, height))
+        if ring is None:
+            ring = self.buffers[(width, height)] = [np.empty((height, width, 3), np.uint8)
+                                                    for _ in range(BUFFERS)]
+        ring.append(ring.pop(0))
+        return ring[-1]
 
     def close(self):
         for renderer in self.renderers.values():

@@ -63,6 +63,9 @@ def sensor_spec(plugin, settings):
         raise PluginError('%s: %s' % (plugin.options.where, exc))
 
 
+IMAGE_QUEUE = 2
+
+
 class CameraPlugin(Plugin):
     """One camera (see the module docstring): cameraName, imageTopicName,
     cameraInfoTopicName, frameName, updateRate."""
@@ -76,10 +79,14 @@ class CameraPlugin(Plugin):
         base = self.topic(spec.name)
         image = self.options.text('imageTopicName', 'image_raw')
         self.on_subscribed = None      # called when someone starts watching a stream
-        self.jpeg = Watched(base + '/' + image + '/compressed', CompressedImage, self._watch)
-        self.raw = Watched(base + '/' + image, Image, self._watch)
+        # Gazebo's image publishers keep 2 frames for a subscriber that is a
+        # moment late (frames are published from their own thread: a burst)
+        self.jpeg = Watched(base + '/' + image + '/compressed', CompressedImage, self._watch,
+                            queue_size=IMAGE_QUEUE)
+        self.raw = Watched(base + '/' + image, Image, self._watch, queue_size=IMAGE_QUEUE)
         self.info_pub = Watched(base + '/' + self.options.text('cameraInfoTopicName',
-                                                               'camera_info'), CameraInfo)
+                                                               'camera_info'), CameraInfo,
+                                queue_size=IMAGE_QUEUE)
         self.info = CameraInfo(width=spec.width, height=spec.height,
                                distortion_model='plumb_bob', D=[0.0] * 5,
                                R=[1, 0, 0, 0, 1, 0, 0, 0, 1])

@@ -1,7 +1,9 @@
-"""The cameras' frame worker: one thread that finishes every camera's frames
-(renders with ``gl``, converts, encodes, publishes) and owns the renderer's
-GL context. The hand-over holds one frame, so a simulator that is ahead
-waits instead of dropping or queueing frames."""
+"""The cameras' frame workers: two threads that finish every camera's frames.
+The first draws (with ``gl`` it owns the renderer's GL context), the second
+encodes and publishes, so that a frame is drawn while the one before it is
+encoded: both wait outside Python's GIL (Mesa's rasteriser, libjpeg). Each
+hand-over holds one frame, so a simulator that is ahead waits instead of
+dropping or queueing frames."""
 import queue
 import threading
 import time
@@ -22,9 +24,13 @@ class FrameWorker(object):
     def __init__(self, kind, engine):
         self.log = engine.log
         self.backend = engine.make_renderer(kind)
-        self.jobs = queue.Queue(maxsize=1)
+        self.jobs = queue.Queue(maxsize=1)       # captured, to draw
+        self.drawn = queue.Queue(maxsize=1)      # drawn, to encode and publish
         self.started = threading.Event()
         self.error, self._last_error = None, -1e9
+        self.publisher = threading.Thread(target=self._publish_loop, name='camera publish',
+                                          daemon=True)
+        self.publisher.start()
         self.thread = threading.Thread(target=self._run, name='camera', daemon=True)
         self.thread.start()
         self.started.wait()
@@ -32,7 +38,7 @@ class FrameWorker(object):
             self.log.warn('camera: renderer %s cannot start (%s); using tiny instead'
                           % (kind, self.error))
             self.backend = engine.make_renderer('tiny')
-            self.thread = threading.Thread(target=self._loop, name='camera', daemon=True)
+            self.thread = threading.Thread(target=self._draw_loop, name='camera', daemon=True)
             self.thread.start()
         self.log.info('camera: renderer %s' % self.backend.name)
 
@@ -44,23 +50,40 @@ class FrameWorker(object):
             self.started.set()
             return
         self.started.set()
-        self._loop()
+        self._draw_loop()
 
-    def _loop(self):
+    def _draw_loop(self):
         while True:
             item = self.jobs.get()
             try:
                 if item is None:
+                    self.drawn.put(None)
                     break
                 camera, when, job = item
-                camera.publish(when, self.backend.finish(job))
+                self.drawn.put((camera, when, self.backend.finish(job)))
             except FRAME_ERRORS as exc:     # a bad frame must not stop the camera
-                if time.monotonic() - self._last_error > 10.0:
-                    self._last_error = time.monotonic()
-                    self.log.error('camera: frame dropped: %s' % exc)
+                self._dropped(exc)
             finally:
                 self.jobs.task_done()
         self.backend.close()
+
+    def _publish_loop(self):
+        while True:
+            item = self.drawn.get()
+            try:
+                if item is None:
+                    break
+                camera, when, image = item
+                camera.publish(when, image)
+            except FRAME_ERRORS as exc:
+                self._dropped(exc)
+            finally:
+                self.drawn.task_done()
+
+    def _dropped(self, exc):
+        if time.monotonic() - self._last_error > 10.0:
+            self._last_error = time.monotonic()
+            self.log.error('camera: frame dropped: %s' % exc)
 
     def submit(self, camera, when, job):
         """Hand a captured frame over; waits while the worker is busy."""
@@ -70,8 +93,13 @@ class FrameWorker(object):
         """Wait until every frame handed over is published (a camera closes)."""
         if self.thread.is_alive():
             self.jobs.join()
+        if self.publisher.is_alive():
+            self.drawn.join()
 
     def close(self):
         if self.thread.is_alive():
-            self.jobs.put(None)
+            self.jobs.put(None)          # passed on to the publishing thread
             self.thread.join(5.0)
+        elif self.publisher.is_alive():
+            self.drawn.put(None)
+        self.publisher.join(5.0)

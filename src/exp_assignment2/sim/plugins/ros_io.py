@@ -21,10 +21,10 @@ class Watched(rospy.SubscribeListener):
     """A publisher that knows, by rospy's events, whether anyone subscribes;
     ``on_change()`` is called when that changes."""
 
-    def __init__(self, topic, cls, on_change=None):
+    def __init__(self, topic, cls, on_change=None, queue_size=1):
         rospy.SubscribeListener.__init__(self)
         self.on_change, self.count = on_change, 0
-        self.pub = rospy.Publisher(topic, cls, queue_size=1, subscriber_listener=self)
+        self.pub = rospy.Publisher(topic, cls, queue_size=queue_size, subscriber_listener=self)
         # a subscriber that connected as rospy registered the topic, before it
         # knew of this listener, brought no event (the camera then never drew
         # for a state machine that was already waiting): count it now
