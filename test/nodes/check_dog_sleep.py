@@ -43,6 +43,10 @@ class TestDogSleep(unittest.TestCase):
         self.assertTrue(wait_until(lambda: self.reached(), 120.0),
                         'still %.2f m from the kennel' % self.kennel_distance())
         arrived = self.reached()[0].header.stamp.to_sec()
+        # where it stopped: odometry stamped from the arrival on (on a loaded
+        # machine the latest one here may still be from before it)
+        self.assertTrue(wait_until(lambda: self.dog.robot.msg.header.stamp.to_sec() >= arrived,
+                                   10.0), 'no odometry after the arrival')
         self.assertLess(self.kennel_distance(), 0.15)
         self.assertNotIn('PLAY', [s for _, s in self.dog.states], 'the ball is ignored')
         # the state machine's own stamps (its rest, then NORMAL, which with
