@@ -78,7 +78,7 @@ class Probe(object):
         self.lock = threading.Lock()
         self.subs = [
             rospy.Subscriber('/robot/camera1/image_raw/compressed', CompressedImage,
-                             self._on_image, queue_size=1, buff_size=2 ** 24),
+                             self._on_image, queue_size=8, buff_size=2 ** 24),
             rospy.Subscriber('/robot/cmd_vel', Twist, self._on_cmd, queue_size=50)]
         if raw:
             self.subs.append(rospy.Subscriber('/robot/camera1/image_raw', Image, self._on_raw,

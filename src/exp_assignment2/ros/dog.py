@@ -113,8 +113,10 @@ class RosDogEyes(object):
         self.window = ImageWindow() if gui else None
         self.output_pub = rospy.Publisher(OUTPUT_TOPIC, CompressedImage, queue_size=1)
         self.decode = FrameDecoder(robot_name(CAMERA_TOPIC))
-        # a few frames of slack: a burst is absorbed, not dropped
-        rospy.Subscriber(robot_name(CAMERA_TOPIC), CompressedImage, self._on_image, queue_size=3,
+        # a simulated second of frames as slack: at real_time_factor 0 a frame
+        # comes every 7 ms of wall time, and a node kept 60 ms off its CPU
+        # dropped some with 8 (rospy keeps the last queue_size of a read)
+        rospy.Subscriber(robot_name(CAMERA_TOPIC), CompressedImage, self._on_image, queue_size=30,
                          buff_size=2 ** 25)
         rospy.on_shutdown(self._report)
 

@@ -63,7 +63,7 @@ def sensor_spec(plugin, settings):
         raise PluginError('%s: %s' % (plugin.options.where, exc))
 
 
-IMAGE_QUEUE = 2
+IMAGE_QUEUE = 4
 
 
 class CameraPlugin(Plugin):
@@ -79,8 +79,9 @@ class CameraPlugin(Plugin):
         base = self.topic(spec.name)
         image = self.options.text('imageTopicName', 'image_raw')
         self.on_subscribed = None      # called when someone starts watching a stream
-        # Gazebo's image publishers keep 2 frames for a subscriber that is a
-        # moment late (frames are published from their own thread: a burst)
+        # frames kept for a subscriber that is a moment late (Gazebo's keep 2;
+        # at real_time_factor 0 a frame leaves every 7 ms of wall time, from
+        # their own thread, and every one should arrive)
         self.jpeg = Watched(base + '/' + image + '/compressed', CompressedImage, self._watch,
                             queue_size=IMAGE_QUEUE)
         self.raw = Watched(base + '/' + image, Image, self._watch, queue_size=IMAGE_QUEUE)
