@@ -113,10 +113,11 @@ class RosDogEyes(object):
         self.window = ImageWindow() if gui else None
         self.output_pub = rospy.Publisher(OUTPUT_TOPIC, CompressedImage, queue_size=1)
         self.decode = FrameDecoder(robot_name(CAMERA_TOPIC))
-        # a simulated second of frames as slack: at real_time_factor 0 a frame
-        # comes every 7 ms of wall time, and a node kept 60 ms off its CPU
-        # dropped some with 8 (rospy keeps the last queue_size of a read)
-        rospy.Subscriber(robot_name(CAMERA_TOPIC), CompressedImage, self._on_image, queue_size=30,
+        # a few frames of slack: a burst is absorbed. Not more: rospy hands
+        # over the oldest of what it kept first, and at real_time_factor 0 a
+        # state machine that cannot keep up steered by frames a simulated
+        # second old with 30 (it lost the ball it was playing with)
+        rospy.Subscriber(robot_name(CAMERA_TOPIC), CompressedImage, self._on_image, queue_size=3,
                          buff_size=2 ** 25)
         rospy.on_shutdown(self._report)
 
