@@ -27,7 +27,9 @@ IMUTILS_VERSION=0.5.4
 XACRO_VERSION=1.13.3    # ROS 1's xacro (PyPI's 2.x is ROS 2's), for $(find xacro)/xacro
 
 log() { printf '[original-env] %s\n' "$*" >&2; }
-as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
+# install_debian, install_pypi: one installer at a time
+# shellcheck source=tools/install.sh
+source "$HERE/../install.sh"
 
 PACKAGE_DIR=
 case "${1:-}" in
@@ -37,26 +39,9 @@ case "${1:-}" in
 esac
 
 # Installs are skipped when present, so this is cheap after the first run.
-missing=()
-for p in "${APT_PACKAGES[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  log "installing Debian packages: ${missing[*]}"
-  as_root apt-get update -qq
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}" >/dev/null
-fi
-if ! /usr/bin/python3 -c 'import imutils' 2>/dev/null; then
-  log "installing imutils==$IMUTILS_VERSION from PyPI for /usr/bin/python3"
-  as_root /usr/bin/python3 -m pip install -q --break-system-packages \
-    --root-user-action=ignore "imutils==$IMUTILS_VERSION"
-fi
-
-if ! /usr/bin/python3 -c 'import xacro' 2>/dev/null; then
-  log "installing xacro==$XACRO_VERSION from PyPI for /usr/bin/python3"
-  as_root /usr/bin/python3 -m pip install -q --break-system-packages \
-    --root-user-action=ignore "xacro==$XACRO_VERSION"
-fi
+install_debian original-env "${APT_PACKAGES[@]}"
+install_pypi original-env imutils "imutils==$IMUTILS_VERSION"
+install_pypi original-env xacro "xacro==$XACRO_VERSION"
 
 if [ ! -f "$WS/devel/setup.bash" ]; then
   log "no catkin workspace at $WS: build it first with: bash tools/run setup"

@@ -1,0 +1,62 @@
+# Sourced by tools/run and tools/original_env/shell.sh: install what is
+# missing, one installer at a time. Several of these scripts start at once on a
+# fresh machine (the test suite runs three workers, each may open the original
+# environment): without the lock, all but one apt-get fail on dpkg's lock and
+# two pip installs can write the same files.
+#   install_debian LOG_PREFIX PACKAGE...   Debian packages not yet installed
+#   install_pypi LOG_PREFIX MODULE SPEC    pip install SPEC for /usr/bin/python3
+#                                          unless MODULE imports there
+
+_as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
+
+_missing_debian() {
+  local p
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || printf '%s\n' "$p"
+  done
+}
+
+# Runs "$@" holding the install lock (a file in the temporary directory, so a
+# user with sudo takes the same one as root).
+_with_install_lock() {
+  local fd
+  exec {fd}>>"${TMPDIR:-/tmp}/exp_assignment2-install.lock"
+  flock "$fd"
+  "$@"
+  local rc=$?
+  exec {fd}>&-
+  return $rc
+}
+
+_install_debian_locked() {
+  local prefix=$1; shift
+  local missing
+  # asked again under the lock: another installer may have just done it
+  mapfile -t missing < <(_missing_debian "$@")
+  [ ${#missing[@]} -eq 0 ] && return 0
+  printf '[%s] installing Debian packages: %s\n' "$prefix" "${missing[*]}" >&2
+  # apt's own lock too: an unattended upgrade may hold it for a while
+  _as_root apt-get -o DPkg::Lock::Timeout=600 update -qq
+  _as_root env DEBIAN_FRONTEND=noninteractive \
+    apt-get -o DPkg::Lock::Timeout=600 install -y -qq "${missing[@]}" >/dev/null
+}
+
+install_debian() {
+  local prefix=$1; shift
+  [ -z "$(_missing_debian "$@")" ] && return 0
+  _with_install_lock _install_debian_locked "$prefix" "$@"
+}
+
+_install_pypi_locked() {
+  local prefix=$1 module=$2 spec=$3
+  /usr/bin/python3 -c "import $module" 2>/dev/null && return 0
+  printf '[%s] installing %s from PyPI for /usr/bin/python3\n' "$prefix" "$spec" >&2
+  _as_root /usr/bin/python3 -m pip install -q --break-system-packages \
+    --root-user-action=ignore "$spec"
+}
+
+install_pypi() {
+  local module=$2
+  /usr/bin/python3 -c "import $module" 2>/dev/null && return 0
+  _with_install_lock _install_pypi_locked "$@"
+}
