@@ -23,6 +23,7 @@ USER_YAML = {
                        'joint': 'arm_joint_01'},
     'gripper_controller': {'type': 'effort_controllers/GripperActionController',
                            'joint': 'head_joint'},
+    'tail_controller': {'type': 'position_controllers/JointPositionController'},
 }
 
 
@@ -70,8 +71,11 @@ class TestControllers(unittest.TestCase):
         self.assertAlmostEqual(rate, 20.0, delta=1.5)
 
     def test_bad_entries_get_one_warning_each(self):
+        # (a controller with no joint is warned about once the YAML has had
+        # time to arrive, leaf by leaf: not while it is half-loaded)
         for name, words in (('arm_controller', "joint 'arm_joint_01' is not a joint"),
-                            ('gripper_controller', 'is not simulated here')):
+                            ('gripper_controller', 'is not simulated here'),
+                            ('tail_controller', '/robot/tail_controller/joint is not set')):
             self.assertTrue(eventually(lambda: self.rosout.lines(words, Log.WARN)), name)
             self.assertEqual(len(self.rosout.lines('controller %s:' % name, Log.WARN)), 1)
 

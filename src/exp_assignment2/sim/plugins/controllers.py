@@ -57,6 +57,8 @@ class JointCommandController(object):
     def __init__(self, manager, name, config):
         self.model, self.engine = manager.plugin.model, manager.plugin.engine
         joint = config.get('joint')
+        if joint is None:
+            raise ValueError('no joint given (%s/%s/joint is not set)' % (manager.ns, name))
         if not isinstance(joint, str) or not self.model.has_joint(joint):
             raise ValueError('%s: joint %r is not a joint of model %s (it has: %s)'
                              % (name, joint, self.model.name,
@@ -137,6 +139,13 @@ CONTROLLER_TYPES = {
 }
 
 
+def incomplete(config):
+    """A joint controller's parameters without its ``joint`` (yet)."""
+    cls = CONTROLLER_TYPES.get(config.get('type'))
+    return (cls is not None and issubclass(cls, JointCommandController)
+            and 'joint' not in config)
+
+
 class ControllerManager(object):
     """Runs the declared controllers of one robot namespace and serves
     ``<ns>/controller_manager/*`` (see :mod:`.ros_control`)."""
@@ -180,14 +189,21 @@ class ControllerManager(object):
             self._warn_once(name, str(exc))
             return None
 
-    def discover(self, params):
-        """Start what ``params`` (the namespace's parameters) declares anew."""
+    def discover(self, params, patient=True):
+        """Start what ``params`` (the namespace's parameters) declares anew.
+        ``patient``: a joint controller with no ``joint`` yet is left for
+        later, neither started nor warned about (a YAML still arriving);
+        returns the names of those."""
         # copies: the parameters may be rospy's cache, which updates in place
         declared = {n: copy.deepcopy(c) for n, c in params.items()
                     if isinstance(c, dict) and 'type' in c}
+        waiting = []
         for name, config in declared.items():
             if self.declared.get(name) == config and (name in self.running or
                                                       name in self.stopped):
+                continue
+            if patient and incomplete(config):
+                waiting.append(name)
                 continue
             self.declared[name] = config
             if name in self.unloaded:
@@ -196,6 +212,7 @@ class ControllerManager(object):
             controller = self._make(name, config)
             if controller is not None:
                 self.running[name] = controller
+        return waiting
 
     def _drop(self, name):
         controller = self.running.pop(name, None) or self.stopped.pop(name, None)

@@ -18,7 +18,9 @@ is read once the parameters have been still for 0.2 s):
   ``<ns>/<name>/command`` is the joint's velocity.
 
 A controller naming a joint the model lacks, or of a type not listed, gets
-one warning and is ignored. ``<ns>/controller_manager/load_controller``,
+one warning and is ignored; one with no ``joint`` yet is given 2 s more (a
+loaded machine can take that long between two leaves of a YAML) before its
+warning. ``<ns>/controller_manager/load_controller``,
 ``unload_controller``, ``switch_controller`` and ``list_controllers`` answer
 as ros_control's controller manager does (``controller_manager spawner``
 uses them); a controller unloaded there stays unloaded until loaded again.
@@ -32,6 +34,7 @@ from exp_assignment2.sim.plugins.base import Plugin
 from exp_assignment2.sim.plugins.controllers import CONTROLLER_TYPES, ControllerManager
 
 SETTLE = 0.2      # wall s without a parameter update before the namespace is read again
+PATIENCE = 2.0    # wall s more for a joint controller whose joint is not set yet
 
 
 class RosControlPlugin(Plugin):
@@ -45,25 +48,35 @@ class RosControlPlugin(Plugin):
         self.manager = ControllerManager(self, self.ns)
         self._lock, self._timer = threading.Lock(), None
         initial = param_watch.watch_namespace(self.ns or '/', self._on_params)
-        self.manager.discover(initial if isinstance(initial, dict) else {})
+        self._discover(initial)
 
     def _on_params(self, key):
         # rospy's XML-RPC thread. A YAML is loaded one parameter at a time
         # (rosparam load sets each leaf): read the namespace once the burst is
         # over, so a half-loaded controller is neither started nor warned about
         with self._lock:
-            if self._timer is not None:
-                self._timer.cancel()
-            self._timer = threading.Timer(SETTLE, self.engine.call_soon, (self._rescan,))
-            self._timer.daemon = True
-            self._timer.start()
+            self._rescan_in(SETTLE, self._rescan)
 
-    def _rescan(self):
+    def _rescan_in(self, seconds, rescan):
+        # called with self._lock held
+        if self._timer is not None:
+            self._timer.cancel()
+        self._timer = threading.Timer(seconds, self.engine.call_soon, (rescan,))
+        self._timer.daemon = True
+        self._timer.start()
+
+    def _rescan(self, patient=True):
         try:
             params = rospy.get_param(self.ns or '/', {})
         except (KeyError, rospy.ROSException):
             return
-        self.manager.discover(params if isinstance(params, dict) else {})
+        self._discover(params, patient)
+
+    def _discover(self, params, patient=True):
+        waiting = self.manager.discover(params if isinstance(params, dict) else {}, patient)
+        if waiting:         # read once more, then warned about if still without a joint
+            with self._lock:
+                self._rescan_in(PATIENCE, lambda: self._rescan(patient=False))
 
     def before_step(self):
         self.manager.apply()
