@@ -1,0 +1,36 @@
+"""tools/install.sh: installers started at once take turns (on a fresh
+machine the test workers open the original environment together, and every
+apt-get but one failed on dpkg's lock)."""
+import os
+import subprocess
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+INSTALL = os.path.join(REPO, 'tools', 'install.sh')
+
+# what an installer does while it holds the lock, made slow enough to overlap
+HOLDER = '''
+source "%s"
+work() { echo "start $1" >> "$LOG"; sleep 0.3; echo "end $1" >> "$LOG"; }
+_with_install_lock work "$1"
+''' % INSTALL
+
+
+def test_installers_started_at_once_take_turns(tmp_path):
+    log = tmp_path / 'log'
+    env = dict(os.environ, LOG=str(log), TMPDIR=str(tmp_path))
+    procs = [subprocess.Popen(['bash', '-c', HOLDER, 'holder', str(i)], env=env)
+             for i in range(3)]
+    assert [p.wait(20) for p in procs] == [0, 0, 0]
+    events = log.read_text().splitlines()
+    assert len(events) == 6
+    for start, end in zip(events[0::2], events[1::2]):      # never interleaved
+        assert start.startswith('start ') and end == 'end ' + start.split()[1], events
+
+
+def test_what_is_installed_is_not_installed_again(tmp_path):
+    # dpkg itself is always installed: no apt-get, no lock, no output
+    out = subprocess.run(['bash', '-c', 'source "%s"; install_debian test dpkg' % INSTALL],
+                         capture_output=True, text=True, timeout=30,
+                         env=dict(os.environ, TMPDIR=str(tmp_path)))
+    assert out.returncode == 0 and out.stderr == '', out.stderr
+    assert not (tmp_path / 'exp_assignment2-install.lock').exists()
