@@ -61,8 +61,32 @@ class TestSimulator(unittest.TestCase):
         cls.image.next(30)
 
     def setUp(self):
+        # a command of the test before still on its way would drive the reset robot
+        self.cmd.publish(Twist())
+        self.assertTrue(self.at_rest(), 'the robot does not come to rest')
         self.reset()
         self.assertTrue(self.back_at_spawn(), 'pose after the reset: %s' % (self.odom.xyzyaw(),))
+
+    def at_rest(self, seconds=0.6, ros_seconds=10.0):
+        """Wait until odometry has shown the robot still for ``seconds`` of its
+        stamps (longer than the drive's 0.5 s command timeout: a command that
+        was late would have moved it). The odometry stamped then, or None."""
+        odom = Watch('/robot/odom', Odometry, keep=True)
+        still = []
+
+        def rested():
+            while odom.all:
+                msg = odom.all.pop(0)
+                t = msg.twist.twist
+                if math.hypot(t.linear.x, t.linear.y) > 0.005 or abs(t.angular.z) > 0.01:
+                    del still[:]
+                else:
+                    still.append(msg)
+            return still and (still[-1].header.stamp - still[0].header.stamp).to_sec() >= seconds
+        try:
+            return still[-1] if eventually(rested, ros_seconds) else None
+        finally:
+            odom.sub.unregister()
 
     def back_at_spawn(self):
         """After a reset: an odometry message published before it may still be
@@ -73,12 +97,16 @@ class TestSimulator(unittest.TestCase):
                     and abs(angle_diff(yaw, SPAWN[2])) < 0.02)
         return eventually(at_spawn, ros_seconds=1.0)
 
-    def drive(self, linear, angular, seconds):
-        """Publish a command at 20 Hz of simulated time for ``seconds``."""
+    def drive(self, linear, angular, seconds, until=None):
+        """Publish a command at 20 Hz of simulated time for ``seconds``, or
+        (``until``) until ``until()`` holds, at most ``seconds``: at
+        real_time_factor 0 a checker kept off its CPU misses its beats and the
+        drive's command timeout stops the robot in between, so a distance is
+        waited for rather than a duration."""
         twist = Twist()
         twist.linear.x, twist.angular.z = linear, angular
         end = rospy.get_time() + seconds
-        while rospy.get_time() < end:
+        while rospy.get_time() < end and not (until is not None and until()):
             self.cmd.publish(twist)
             clock().sleep(0.05)
 
@@ -171,14 +199,16 @@ class TestSimulator(unittest.TestCase):
         sign = rospy.get_param('/robot/turn_sign')     # rep103: +1 (left), original: -1
         self.assertEqual(sign, rospy.get_param('~turn_sign'))
         yaw0 = self.pose()[3]
-        self.drive(0.0, 0.5, 1.0)
+        self.drive(0.0, 0.5, 10.0, until=lambda: abs(angle_diff(self.odom.xyzyaw()[3], yaw0))
+                   > 0.3)
         self.assertGreater(sign * angle_diff(self.pose()[3], yaw0), 0.15)
 
     def test_forward_command_moves_along_the_heading(self):
         x0, y0, _, yaw0 = self.pose()
         during = Watch('/robot/odom', Odometry, keep=True)
         try:
-            self.drive(0.4, 0.0, 2.0)
+            self.drive(0.4, 0.0, 10.0, until=lambda: math.hypot(
+                self.odom.xyzyaw()[0] - x0, self.odom.xyzyaw()[1] - y0) > 0.7)
         finally:
             during.sub.unregister()
         x1, y1, _, _ = self.pose()
@@ -192,12 +222,15 @@ class TestSimulator(unittest.TestCase):
                            'odom twist is in the child frame')
 
     def test_a_stale_command_stops_the_robot(self):
-        self.drive(0.4, 0.0, 0.5)
-        clock().sleep(1.5)       # no commands: the 0.5 s timeout stops the wheels
         x0, y0, _, _ = self.pose()
-        clock().sleep(1.0)
-        x1, y1, _, _ = self.pose()
-        self.assertLess(math.hypot(x1 - x0, y1 - y0), 0.02)
+        self.drive(0.4, 0.0, 10.0, until=lambda: math.hypot(
+            self.odom.xyzyaw()[0] - x0, self.odom.xyzyaw()[1] - y0) > 0.1)
+        # no more commands: the 0.5 s timeout stops the wheels, and the robot
+        # stays where it stopped
+        rest = self.at_rest(seconds=1.0)
+        self.assertIsNotNone(rest, 'the robot went on without commands')
+        p = rest.pose.pose.position
+        self.assertGreater(math.hypot(p.x - x0, p.y - y0), 0.1)
 
     def test_a_non_finite_command_is_ignored_with_a_warning(self):
         x0, y0, _, _ = self.pose()
@@ -265,7 +298,8 @@ class TestSimulator(unittest.TestCase):
             self.assertTrue(ok, 'camera yaw - robot yaw: %s' % seen[-3:])
 
     def test_reset_puts_the_robot_back(self):
-        self.drive(0.5, 0.3, 2.0)
+        self.drive(0.5, 0.3, 10.0, until=lambda: math.hypot(
+            self.odom.xyzyaw()[0] - SPAWN[0], self.odom.xyzyaw()[1] - SPAWN[1]) > 0.4)
         x, y, _, _ = self.pose()
         self.assertGreater(math.hypot(x - SPAWN[0], y - SPAWN[1]), 0.3)
         self.reset()
