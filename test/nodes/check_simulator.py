@@ -173,19 +173,22 @@ class TestSimulator(unittest.TestCase):
     def test_the_raw_image_is_rgb8_with_the_stamp_and_frame_of_the_jpeg(self):
         raw = Watch('/robot/camera1/image_raw', Image, keep=True)
         jpegs = Watch('/robot/camera1/image_raw/compressed', CompressedImage, keep=True)
+
+        def matched():      # raw frames with the stamp and frame of a JPEG one
+            stamps = {(m.header.stamp, m.header.frame_id) for m in list(jpegs.all)}
+            return [m for m in list(raw.all) if (m.header.stamp, m.header.frame_id) in stamps]
         try:     # 1.9 MB a frame: the simulator stops drawing them once we leave
-            self.assertTrue(wait_until(lambda: len(raw.all) >= 5, 10.0))
+            # (each subscription connects in its own time: wait for frames of both)
+            ok = eventually(lambda: len(matched()) >= 3)
         finally:
             raw.sub.unregister()
             jpegs.sub.unregister()
+        self.assertTrue(ok, 'raw %s, jpeg %s' % (
+            ['%.2f' % m.header.stamp.to_sec() for m in raw.all[-8:]],
+            ['%.2f' % m.header.stamp.to_sec() for m in jpegs.all[-8:]]))
         image = raw.all[-1]
         self.assertEqual((image.width, image.height, image.encoding, image.step),
                          (800, 800, 'rgb8', 2400))
-        stamps = {(m.header.stamp, m.header.frame_id) for m in jpegs.all}
-        matched = [m for m in raw.all if (m.header.stamp, m.header.frame_id) in stamps]
-        self.assertGreaterEqual(len(matched), 3, 'raw %s, jpeg %s' % (
-            ['%.2f' % m.header.stamp.to_sec() for m in raw.all],
-            ['%.2f' % m.header.stamp.to_sec() for m in jpegs.all]))
         self.assertEqual(image.header.frame_id, 'camera_link')
 
     def test_camera_info_is_an_800_px_pinhole_with_80_degrees(self):
