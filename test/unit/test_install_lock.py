@@ -34,3 +34,29 @@ def test_what_is_installed_is_not_installed_again(tmp_path):
                          env=dict(os.environ, TMPDIR=str(tmp_path)))
     assert out.returncode == 0 and out.stderr == '', out.stderr
     assert not (tmp_path / 'exp_assignment2-install.lock').exists()
+
+
+def test_the_overlay_build_takes_the_same_lock(tmp_path, monkeypatch):
+    """debian_packages.install (the overlay build's dev packages) waits for
+    an installer of tools/install.sh, then asks again what is missing."""
+    import importlib.util
+    spec = importlib.util.spec_from_file_location(
+        'debian_packages', os.path.join(REPO, 'tools', 'original_env', 'overlay',
+                                        'debian_packages.py'))
+    debian_packages = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(debian_packages)
+    log = tmp_path / 'log'
+    monkeypatch.setattr(debian_packages, 'LOCK', str(tmp_path / 'exp_assignment2-install.lock'))
+    holder = subprocess.Popen(['bash', '-c', HOLDER, 'holder', 'shell'],
+                              env=dict(os.environ, LOG=str(log), TMPDIR=str(tmp_path)))
+    while not log.exists():         # the shell's installer holds the lock
+        pass
+    asked = []
+    monkeypatch.setattr(debian_packages, 'missing',
+                        lambda packages: asked.append(log.read_text()) or ['libfoo-dev'])
+    monkeypatch.setattr(debian_packages, '_apt_install',
+                        lambda needed: log.open('a').write('apt-get %s\n' % needed[0]))
+    debian_packages.install(['libfoo-dev'])
+    assert holder.wait(20) == 0
+    assert log.read_text().splitlines() == ['start shell', 'end shell', 'apt-get libfoo-dev']
+    assert asked[-1] == 'start shell\nend shell\n'      # asked again once the lock was free

@@ -6,6 +6,7 @@ find_package(catkin ...), OpenCV in another find_package, and may have C++
 nodes (roscpp, actionlib clients): Debian has all of them, so they are the
 real ones, not stand-ins.
 """
+import fcntl
 import os
 import subprocess
 import sys
@@ -15,6 +16,11 @@ TEMPLATE_BUILD = (
     'libcv-bridge-dev', 'libimage-transport-dev', 'libtf-dev', 'libopencv-dev',
     'libstd-msgs-dev', 'libgeometry-msgs-dev', 'libsensor-msgs-dev', 'libnav-msgs-dev',
 )
+
+
+# the lock of tools/install.sh: one installer at a time (the test suite's
+# workers, a user's two shells), else all but one apt-get fail on dpkg's lock
+LOCK = os.path.join(os.environ.get('TMPDIR') or '/tmp', 'exp_assignment2-install.lock')
 
 
 class InstallFailed(Exception):
@@ -31,19 +37,29 @@ def missing(packages):
 
 
 def install(packages):
-    """Install those of ``packages`` that are missing (as root, else through sudo)."""
-    needed = missing(packages)
-    if not needed:
+    """Install those of ``packages`` that are missing (as root, else through sudo),
+    holding the install lock."""
+    if not missing(packages):
         return
+    with open(LOCK, 'a') as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        needed = missing(packages)      # again: another installer may have just done it
+        if needed:
+            _apt_install(needed)
+
+
+def _apt_install(needed):
     print('[original-env] installing Debian packages: ' + ' '.join(needed), file=sys.stderr,
           flush=True)
     sudo = [] if os.geteuid() == 0 else ['sudo']
     env = dict(os.environ, DEBIAN_FRONTEND='noninteractive')
-    for cmd in (['apt-get', 'update', '-qq'],
-                ['apt-get', 'install', '-y', '-qq', '--no-install-recommends'] + needed):
+    # apt's own lock too: an unattended upgrade may hold it for a while
+    apt = ['apt-get', '-o', 'DPkg::Lock::Timeout=600']
+    for cmd in (apt + ['update', '-qq'],
+                apt + ['install', '-y', '-qq', '--no-install-recommends'] + needed):
         proc = subprocess.run(sudo + cmd, env=env, stdout=subprocess.DEVNULL)
         if proc.returncode != 0:
-            raise InstallFailed('%s exited with %d' % (' '.join(cmd[:2]), proc.returncode))
+            raise InstallFailed('apt-get %s exited with %d' % (cmd[3], proc.returncode))
 
 
 def candidate(component):
