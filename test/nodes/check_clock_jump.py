@@ -16,7 +16,8 @@ from geometry_msgs.msg import Twist
 from rosgraph_msgs.msg import Clock, Log
 from std_srvs.srv import Empty
 
-from checks import DogObserver, SimpleClient, Watch, clock, finished, node_pid, wait_until
+from checks import (DogObserver, SimpleClient, Watch, clock, eventually, finished, node_pid,
+                    wait_until)
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 
@@ -58,6 +59,10 @@ class TestClockJump(unittest.TestCase):
         self.assertTrue(self.moves(since), 'no /robot/cmd_vel that moves within 10 s')
         self.assertTrue(driven(), 'the robot did not move within 10 s')
 
+    def listeners(self):
+        """The nodes subscribed to the second /clock publisher."""
+        return [c.endpoint_id for c in self.stray.impl.connections]
+
     def watch_commands(self):
         self.cmd_before, self.cmd_times = len(self.cmd.all), []
         self.cmd.on_message = lambda msg: self.cmd_times.append(time.monotonic())
@@ -67,6 +72,11 @@ class TestClockJump(unittest.TestCase):
         self.assertTrue(wait_until(lambda: self.dog.robot.msg is not None, 10.0))
         pids = {name: node_pid(name) for name in NODES}
         self.assertNotIn(None, pids.values(), pids)
+        # the simulator asks the master twice a wall second who publishes
+        # /clock, then subscribes: the stamps start once it listens (on a
+        # loaded machine that took more than the 2 s they last)
+        self.assertTrue(eventually(lambda: '/gazebo' in self.listeners(), 10.0, 10.0),
+                        'the simulator did not subscribe to the second /clock publisher')
         self.watch_commands()
         end, sent = time.monotonic() + 2.0, 0
         while time.monotonic() < end:
@@ -77,7 +87,8 @@ class TestClockJump(unittest.TestCase):
         rospy.loginfo('sent %d stray /clock stamps in 2 s', sent)
         self.assert_drives_again(stopped)
 
-        named = self.rosout.lines('%s publishes it too' % rospy.get_name(), Log.ERROR, '/gazebo')
+        named = eventually(lambda: self.rosout.lines('%s publishes it too' % rospy.get_name(),
+                                                     Log.ERROR, '/gazebo'))
         self.assertTrue(named, 'no ERROR line of the simulator names the second publisher')
         self.assertEqual({name: node_pid(name) for name in NODES}, pids, 'a node restarted')
 
