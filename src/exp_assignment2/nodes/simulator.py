@@ -95,6 +95,8 @@ class SimulatorNode(object):
             settings=dict(renderer=str(p['renderer']), cmd_timeout=float(p['cmd_timeout']),
                           max_linear=float(p['max_linear']),
                           max_angular=float(p['max_angular']), camera=camera,
+                          # at real_time_factor 0, frames wait for consumers that acknowledge them
+                          frame_pace=float(p['real_time_factor']) == 0,
                           jpeg_quality=int(p['jpeg_quality'])))
         self.clock_pub = rospy.Publisher('/clock', Clock, queue_size=10)
         self.set_time = own_clock()                 # this node's ROS time, without /clock

@@ -12,13 +12,14 @@ import threading
 import rospy
 from geometry_msgs.msg import Twist
 from sensor_msgs.msg import CompressedImage
-from std_msgs.msg import Float64
+from std_msgs.msg import Float64, Header
 
 from exp_assignment2.ros.frames import FrameDecoder
 from exp_assignment2.ros.robot_model import robot_name
 from exp_assignment2.vision import BallDetector, annotate, encode_jpeg, vision_scale
 
 CAMERA_TOPIC = 'camera1/image_raw/compressed'      # in the robot's namespace
+FRAME_DONE_TOPIC = 'camera1/frame_done'     # each frame's header once it is dealt with
 OUTPUT_TOPIC = '/output/image_raw/compressed'
 CMD_TOPIC = 'cmd_vel'
 HEAD_TOPIC = 'joint_position_controller/command'
@@ -117,6 +118,9 @@ class RosDogEyes(object):
         # over the oldest of what it kept first, and at real_time_factor 0 a
         # state machine that cannot keep up steered by frames a simulated
         # second old with 30 (it lost the ball it was playing with)
+        # at real_time_factor 0 the simulator holds its frames while this node
+        # is 3 frames behind (its pacing): none is lost from the queue of 3
+        self.done_pub = rospy.Publisher(robot_name(FRAME_DONE_TOPIC), Header, queue_size=10)
         rospy.Subscriber(robot_name(CAMERA_TOPIC), CompressedImage, self._on_image, queue_size=3,
                          buff_size=2 ** 25)
         rospy.on_shutdown(self._report)
@@ -133,6 +137,17 @@ class RosDogEyes(object):
         self.servo = servo
 
     def _on_image(self, msg):
+        try:
+            self._see(msg)
+        finally:
+            try:
+                self.done_pub.publish(Header(seq=msg.header.seq, stamp=msg.header.stamp,
+                                             frame_id=msg.header.frame_id))
+            except rospy.ROSException:
+                if not rospy.core.is_shutdown_requested():   # a frame while the node stops
+                    raise
+
+    def _see(self, msg):
         seq = msg.header.seq
         if self.last_seq is not None and self.last_seq < seq:
             self.missed += seq - self.last_seq - 1

@@ -1,4 +1,7 @@
-"""Keeping simulated time in step with the wall clock (no ROS, no pybullet)."""
+"""Keeping simulated time in step with the wall clock, and with the
+consumers of the camera (no ROS, no pybullet)."""
+import collections
+import threading
 import time
 
 # real_time_factor 0's ceiling: ROS nodes in other processes close their loops
@@ -46,3 +49,82 @@ class Pacer(object):
             self.restart(sim_time)
             return 0.0
         return max(ahead / self.pace, 0.0)
+
+
+class FramePace(object):
+    """At real_time_factor 0, holds a camera's frames for the consumers that
+    acknowledge them, so that every frame reaches them.
+
+    As fast as possible is as fast as the slowest of them: a consumer that
+    falls behind would otherwise lose frames from its queue (the state
+    machine keeps 3), and the world it steers in runs on without it. A
+    consumer acknowledges a frame by its stamp (:meth:`done`); before a new
+    frame, :meth:`wait` holds the simulation while a consumer still has
+    ``window`` frames unacknowledged. Consumers that acknowledge nothing are
+    not waited for; one silent for ``patience`` wall seconds (dead, being
+    restarted, stopped in a debugger) is not waited for until it acknowledges
+    again, and ``log`` says so once.
+
+    :param log: the host's logger (``info``), or None
+    :param now: wall clock (s)
+    """
+
+    def __init__(self, window=3, patience=1.0, log=None, now=time.monotonic):
+        self.window, self.patience, self.now, self.log = window, patience, now, log
+        self.cond = threading.Condition()
+        self.sent = collections.deque()     # stamps (ns) of frames handed over, oldest first
+        self.consumers = {}                 # name -> [last stamp done (ns), wall time, waited for]
+
+    def done(self, consumer, stamp_ns):
+        """``consumer`` has finished with the frame stamped ``stamp_ns``."""
+        with self.cond:
+            entry = self.consumers.get(consumer)
+            if (entry is None or not entry[2]) and self.log is not None and self.sent:
+                self.log.info('camera: %s acknowledges frames: the simulation waits for it'
+                              % consumer)
+            self.consumers[consumer] = [stamp_ns, self.now(), True]
+            self.cond.notify_all()
+
+    def _behind(self):
+        """The consumers waited for that have ``window`` frames unacknowledged."""
+        late = []
+        for name, (stamp, _, waited) in self.consumers.items():
+            if waited and sum(1 for s in self.sent if s > stamp) >= self.window:
+                late.append(name)
+        return late
+
+    def wait(self, stop=None):
+        """Before a frame: wait while a consumer is ``window`` frames behind
+        (or until ``stop`` is set)."""
+        with self.cond:
+            while True:
+                late = self._behind()
+                if not late or (stop is not None and stop.is_set()):
+                    return
+                now = self.now()
+                for name in late:
+                    entry = self.consumers[name]
+                    if now - entry[1] >= self.patience:
+                        entry[2] = False
+                        if self.log is not None:
+                            self.log.info('camera: %s acknowledged no frame for %.1f s: not '
+                                          'waiting for it' % (name, now - entry[1]))
+                self.cond.wait(min(0.1, self.patience))
+
+    def sent_frame(self, stamp_ns):
+        """A frame stamped ``stamp_ns`` is handed over."""
+        with self.cond:
+            self.sent.append(stamp_ns)
+            oldest = min((c[0] for c in self.consumers.values()), default=stamp_ns)
+            while len(self.sent) > self.window and self.sent[0] <= oldest:
+                self.sent.popleft()
+            while len(self.sent) > 1000:        # nobody acknowledges: keep it bounded
+                self.sent.popleft()
+
+    def reset(self):
+        """Time went back (reset_simulation): forget the stamps."""
+        with self.cond:
+            self.sent.clear()
+            for entry in self.consumers.values():
+                entry[0] = -1
+            self.cond.notify_all()

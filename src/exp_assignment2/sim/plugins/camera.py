@@ -7,6 +7,13 @@ Gazebo's camera plugin publishes through image_transport.
   format (``R8G8B8``: rgb8), same stamp and frame as the JPEG;
 * ``<ns>/<cameraName>/<cameraInfoTopicName>``.
 
+At real_time_factor 0 (the host's ``frame_pace`` setting) the camera also
+listens on ``<ns>/<cameraName>/frame_done`` (std_msgs/Header: the header of a
+frame a consumer has finished with, as the state machine sends) and holds
+the simulation while such a consumer is :data:`PACE_WINDOW` frames behind
+(:class:`~exp_assignment2.sim.pacing.FramePace`): as fast as possible is then
+as fast as the dog's vision, and it loses no frame.
+
 Each is made only while it has a subscriber (rospy tells the plugin when
 subscribers come and go), so an unwatched camera costs nothing. Frames are
 due at the sensor's update_rate in simulated time. The simulator's thread
@@ -21,9 +28,11 @@ import math
 
 import cv2
 from sensor_msgs.msg import CameraInfo, CompressedImage, Image
+import rospy
 from std_msgs.msg import Header
 
 from exp_assignment2.sim.camera import CameraSpec
+from exp_assignment2.sim.pacing import FramePace
 from exp_assignment2.sim.plugins.base import Plugin, PluginError
 from exp_assignment2.sim.plugins.frame_worker import FrameWorker
 from exp_assignment2.sim.plugins.cores import Every
@@ -64,6 +73,10 @@ def sensor_spec(plugin, settings):
 
 
 IMAGE_QUEUE = 4
+# frames a pacing consumer may have unacknowledged: rospy reads what has come
+# while a callback ran and keeps the newest queue_size of it, so a window as
+# long as the state machine's queue (3) loses none
+PACE_WINDOW = 3
 
 
 class CameraPlugin(Plugin):
@@ -93,6 +106,11 @@ class CameraPlugin(Plugin):
                                R=[1, 0, 0, 0, 1, 0, 0, 0, 1])
         self.info.K, self.info.P = spec.intrinsics()
         self.every = Every(spec.rate, lambda: self.engine.time)
+        self.pace, self.done_sub = None, None
+        if self.engine.settings.get('frame_pace'):
+            self.pace = FramePace(PACE_WINDOW, log=self.engine.log)
+            self.done_sub = rospy.Subscriber(base + '/frame_done', Header, self._on_done,
+                                             queue_size=10)
         self.worker = self.engine.shared(
             'camera.worker', lambda: FrameWorker(self.engine.settings.get('renderer', 'gl'),
                                                  self.engine))
@@ -100,6 +118,10 @@ class CameraPlugin(Plugin):
     def _watch(self):
         if self.on_subscribed is not None and self.wanted():
             self.on_subscribed()
+
+    def _on_done(self, header):
+        consumer = (getattr(header, '_connection_header', None) or {}).get('callerid', '?')
+        self.pace.done(consumer, header.stamp.to_nsec())
 
     def wanted(self):
         """Someone subscribes to an image stream."""
@@ -110,7 +132,11 @@ class CameraPlugin(Plugin):
             return
         when = stamp(self.engine)
         if self.wanted():
+            if self.pace is not None:
+                self.pace.wait()
             self.worker.submit(self, when, self.worker.backend.capture(self.spec))
+            if self.pace is not None:
+                self.pace.sent_frame(when.to_nsec())
         elif self.info_pub.wanted:
             self._publish_info(when)
 
@@ -131,8 +157,12 @@ class CameraPlugin(Plugin):
 
     def reset(self):
         self.every.reset()
+        if self.pace is not None:
+            self.pace.reset()
 
     def close(self):
+        if self.done_sub is not None:
+            self.done_sub.unregister()
         self.worker.drain()
         for watched in (self.jpeg, self.raw, self.info_pub):
             watched.pub.unregister()
