@@ -129,11 +129,22 @@ def run_system(args, seconds, log, node_names, warmup=5.0, raw=False):
         if lat:
             result['latency_ms'] = dict(median=lat[len(lat) // 2],
                                         p95=lat[int(len(lat) * 0.95)], n=len(lat))
-        return result
     finally:
         probe.close()
         launch.stop()
         time.sleep(2)
+    report = state_machine_report(log)       # written as the launch stopped
+    if report:
+        result['state_machine_frames'] = report
+    return result
+
+
+def state_machine_report(log):
+    """The state machine's count of the frames it saw and missed (its line at
+    shutdown, 'camera: N frames, M missed (P %)'), if the log has it."""
+    with open(log) as f:
+        lines = [line for line in f if '] camera: ' in line and ' missed (' in line]
+    return lines[-1].split('] camera: ', 1)[1].strip() if lines else None
 
 
 def start_master(port=11411):
