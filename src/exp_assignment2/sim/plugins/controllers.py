@@ -33,7 +33,7 @@ class JointStateController(object):
             raise ValueError('%s/publish_rate must be a positive number, got %r'
                              % (name, rate))
         self.every = Every(float(rate), lambda: self.engine.time)
-        self.pub = rospy.Publisher(manager.ns + '/joint_states', JointState, queue_size=10)
+        self.pub = manager.publisher(manager.ns + '/joint_states', JointState)
 
     def apply(self):
         pass
@@ -46,7 +46,7 @@ class JointStateController(object):
         self.every.reset()
 
     def stop(self):
-        self.pub.unregister()
+        pass            # the publisher is the manager's: a replacement goes on with it
 
 
 class JointCommandController(object):
@@ -154,6 +154,7 @@ class ControllerManager(object):
         self.plugin, self.ns = plugin, ns
         self.running, self.stopped, self.declared = {}, {}, {}
         self.unloaded, self.warned = set(), set()
+        self.publishers = {}
         call = plugin.engine.call_and_wait
         base = ns + '/controller_manager/'
         self.services = [
@@ -169,6 +170,16 @@ class ControllerManager(object):
             rospy.Service(base + 'list_controllers', ListControllers,
                           lambda req: ListControllersResponse(call(self.list))),
         ]
+
+    def publisher(self, topic, cls):
+        """The namespace's one publisher of ``topic``, kept while controllers come
+        and go: a controller replaced by a user's YAML (a joint_state_controller
+        with its own publish_rate) that unregistered its publisher and made a
+        new one left subscribers (robot_state_publisher too) with no
+        connection now and then, when the master's two updates crossed."""
+        if topic not in self.publishers:
+            self.publishers[topic] = rospy.Publisher(topic, cls, queue_size=10)
+        return self.publishers[topic]
 
     def _warn_once(self, name, text):
         if (name, text) not in self.warned:
@@ -283,3 +294,5 @@ class ControllerManager(object):
             self._drop(name)
         for service in self.services:
             service.shutdown()
+        for pub in self.publishers.values():
+            pub.unregister()
