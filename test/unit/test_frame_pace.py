@@ -124,3 +124,14 @@ def test_time_going_back_forgets_the_stamps():
     assert not done.wait(0.3)
     pace.done('/sm', 2)
     assert done.wait(1.0)
+
+
+def test_a_consumer_announced_before_the_first_frame_holds_the_first_frames():
+    pace = FramePace(window=3, patience=10.0)
+    pace.done('/state_machine', 0)          # its latched empty header, before any frame
+    send(pace, [1, 2, 3])
+    passed = threading.Event()
+    threading.Thread(target=lambda: (send(pace, [4]), passed.set())).start()
+    assert not passed.wait(0.3)             # its first frames are slow: they wait
+    pace.done('/state_machine', 1)
+    assert passed.wait(2.0)

@@ -119,8 +119,12 @@ class RosDogEyes(object):
         # state machine that cannot keep up steered by frames a simulated
         # second old with 30 (it lost the ball it was playing with)
         # at real_time_factor 0 the simulator holds its frames while this node
-        # is 3 frames behind (its pacing): none is lost from the queue of 3
-        self.done_pub = rospy.Publisher(robot_name(FRAME_DONE_TOPIC), Header, queue_size=10)
+        # is 3 frames behind (its pacing): none is lost from the queue of 3.
+        # A latched empty header says so before the first frame (its first
+        # frames, slow ones, were lost before it had acknowledged any)
+        self.done_pub = rospy.Publisher(robot_name(FRAME_DONE_TOPIC), Header, queue_size=10,
+                                        latch=True)
+        self.done_pub.publish(Header())
         rospy.Subscriber(robot_name(CAMERA_TOPIC), CompressedImage, self._on_image, queue_size=3,
                          buff_size=2 ** 25)
         rospy.on_shutdown(self._report)

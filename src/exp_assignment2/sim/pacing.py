@@ -58,7 +58,8 @@ class FramePace(object):
     As fast as possible is as fast as the slowest of them: a consumer that
     falls behind would otherwise lose frames from its queue (the state
     machine keeps 3), and the world it steers in runs on without it. A
-    consumer acknowledges a frame by its stamp (:meth:`done`); before a new
+    consumer acknowledges a frame by its stamp (:meth:`done`; stamp 0, before
+    any frame, announces it, so that its first frames wait too); before a new
     frame, :meth:`wait` holds the simulation while a consumer still has
     ``window`` frames unacknowledged. Consumers that acknowledge nothing are
     not waited for; one silent for ``patience`` wall seconds (dead, being
@@ -79,7 +80,7 @@ class FramePace(object):
         """``consumer`` has finished with the frame stamped ``stamp_ns``."""
         with self.cond:
             entry = self.consumers.get(consumer)
-            if (entry is None or not entry[2]) and self.log is not None and self.sent:
+            if (entry is None or not entry[2]) and self.log is not None:
                 self.log.info('camera: %s acknowledges frames: the simulation waits for it'
                               % consumer)
             self.consumers[consumer] = [stamp_ns, self.now(), True]

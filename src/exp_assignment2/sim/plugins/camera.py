@@ -9,10 +9,10 @@ Gazebo's camera plugin publishes through image_transport.
 
 At real_time_factor 0 (the host's ``frame_pace`` setting) the camera also
 listens on ``<ns>/<cameraName>/frame_done`` (std_msgs/Header: the header of a
-frame a consumer has finished with, as the state machine sends) and holds
-the simulation while such a consumer is :data:`PACE_WINDOW` frames behind
-(:class:`~exp_assignment2.sim.pacing.FramePace`): as fast as possible is then
-as fast as the dog's vision, and it loses no frame.
+frame a consumer has finished with, as the state machine sends, latching an
+empty one at its start) and holds the simulation while such a consumer is
+:data:`PACE_WINDOW` frames behind (:class:`~exp_assignment2.sim.pacing.FramePace`):
+as fast as possible is then as fast as the dog's vision, and it loses no frame.
 
 Each is made only while it has a subscriber (rospy tells the plugin when
 subscribers come and go), so an unwatched camera costs nothing. Frames are
