@@ -1,6 +1,7 @@
 """Running-system figures of the benchmark: roslaunch, then measure in wall
 time (wall time is what is measured here, so the waits are wall-clock)."""
 import os
+import re
 import subprocess
 import threading
 import time
@@ -12,6 +13,7 @@ from geometry_msgs.msg import Twist
 from sensor_msgs.msg import CompressedImage, Image
 
 CLK_TCK = os.sysconf('SC_CLK_TCK')
+FRAMES_LINE = re.compile(r': camera: (\d+ frames, \d+ missed \([\d.]+ %\))')
 
 
 class Launch(object):
@@ -143,8 +145,8 @@ def state_machine_report(log):
     """The state machine's count of the frames it saw and missed (its line at
     shutdown, 'camera: N frames, M missed (P %)'), if the log has it."""
     with open(log) as f:
-        lines = [line for line in f if '] camera: ' in line and ' missed (' in line]
-    return lines[-1].split('] camera: ', 1)[1].strip() if lines else None
+        found = FRAMES_LINE.findall(f.read())
+    return found[-1] if found else None
 
 
 def start_master(port=11411):
