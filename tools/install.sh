@@ -35,7 +35,8 @@ _install_debian_locked() {
   mapfile -t missing < <(_missing_debian "$@")
   [ ${#missing[@]} -eq 0 ] && return 0
   printf '[%s] installing Debian packages: %s\n' "$prefix" "${missing[*]}" >&2
-  # apt's own lock too: an unattended upgrade may hold it for a while
+  # DPkg::Lock::Timeout: wait for dpkg's lock (an unattended upgrade may hold
+  # it); our own installers are kept apart by the lock above
   _as_root apt-get -o DPkg::Lock::Timeout=600 update -qq
   _as_root env DEBIAN_FRONTEND=noninteractive \
     apt-get -o DPkg::Lock::Timeout=600 install -y -qq "${missing[@]}" >/dev/null

@@ -60,7 +60,9 @@ class TestClockJump(unittest.TestCase):
         self.assertTrue(driven(), 'the robot did not move within 10 s')
 
     def listeners(self):
-        """The nodes subscribed to the second /clock publisher."""
+        """The nodes subscribed to the second /clock publisher (rospy's
+        connections: get_num_connections() cannot say who, and every node
+        with use_sim_time subscribes to /clock)."""
         return [c.endpoint_id for c in self.stray.impl.connections]
 
     def watch_commands(self):

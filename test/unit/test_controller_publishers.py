@@ -47,3 +47,15 @@ def test_a_replaced_joint_state_controller_goes_on_with_the_same_publisher(monke
     assert not first.pub.unregistered
     manager.close()
     assert first.pub.unregistered
+
+
+def test_an_unloaded_joint_state_controller_takes_its_topic_away(monkeypatch):
+    monkeypatch.setattr(controllers.rospy, 'Publisher', FakePublisher)
+    monkeypatch.setattr(controllers.rospy, 'Service', FakeService)
+    FakePublisher.made = []
+    plugin = SimpleNamespace(model=SimpleNamespace(name='robot'),
+                             engine=SimpleNamespace(time=0.0, call_and_wait=None))
+    manager = controllers.ControllerManager(plugin, '/robot')
+    manager.discover({'joint_state_controller': {'type': JSC, 'publish_rate': 50}})
+    assert manager.unload('joint_state_controller')
+    assert [p.unregistered for p in FakePublisher.made] == [True]

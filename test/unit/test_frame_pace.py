@@ -24,9 +24,66 @@ def send(pace, stamps):
 
 
 def test_nobody_acknowledges_nobody_is_waited_for():
-    pace = FramePace(window=2)
-    send(pace, range(100))                   # returns at once
-    assert len(pace.sent) <= 1000
+    pace = FramePace(window=2, now=lambda: 0.0)     # a wait would never end
+    send(pace, range(1, 101))
+    assert list(pace.sent) == [99, 100]             # only a window is kept
+
+
+def test_a_consumer_let_go_keeps_the_stamps_bounded():
+    ticks = iter(range(10 ** 6))            # a wall clock 1 s on at each look
+    pace = FramePace(window=2, patience=1.0, now=lambda: float(next(ticks)))
+    pace.sent_frame(1)
+    pace.done('/state_machine', 1)
+    send(pace, range(2, 2002))              # let go at the first wait, then not waited for
+    assert len(pace.sent) == 2
+    assert pace.consumers['/state_machine'][2] is False
+
+
+def test_a_pause_with_nothing_pending_does_not_let_a_consumer_go():
+    """Patience counts from when a wait began: a consumer that acknowledged
+    everything 5 s ago (the world was paused) is waited for."""
+    wall = [0.0]
+    log = Log()
+    pace = FramePace(window=2, patience=1.0, log=log, now=lambda: wall[0])
+    pace.sent_frame(1)
+    pace.done('/state_machine', 1)
+    wall[0] = 5.0                           # paused for 5 s, nothing unacknowledged
+    send(pace, [2, 3])
+    waiter = threading.Thread(target=pace.wait)
+    waiter.start()
+    time.sleep(0.3)
+    assert waiter.is_alive()                # held, not let go
+    pace.done('/state_machine', 2)
+    waiter.join(2.0)
+    assert not waiter.is_alive()
+    assert [line for level, line in log.lines if 'no frame' in line] == []
+
+
+def test_a_consumer_that_joins_late_is_counted_from_the_newest_frame():
+    """The state machine's announcement after rviz made the camera draw."""
+    pace = FramePace(window=2, patience=10.0)
+    send(pace, range(1, 6))
+    pace.done('/state_machine', 0)          # its latched empty header
+    send(pace, [6, 7])                      # not 5 frames behind: no wait
+    passed = threading.Event()
+    threading.Thread(target=lambda: (send(pace, [8]), passed.set())).start()
+    assert not passed.wait(0.3)             # 6 and 7 unacknowledged: held
+    pace.done('/state_machine', 6)
+    assert passed.wait(2.0)
+
+
+def test_an_acknowledgement_from_before_a_reset_is_ignored():
+    pace = FramePace(window=2, patience=10.0)
+    send(pace, [100, 200])
+    pace.done('/sm', 200)
+    pace.reset()                            # time back to 0
+    pace.done('/sm', 300)                   # a frame still on its way: stale
+    send(pace, [1, 2])
+    passed = threading.Event()
+    threading.Thread(target=lambda: (send(pace, [3]), passed.set())).start()
+    assert not passed.wait(0.3)             # 1 and 2 unacknowledged: held
+    pace.done('/sm', 1)
+    assert passed.wait(2.0)
 
 
 def test_a_consumer_holds_the_frames_it_is_a_window_behind():

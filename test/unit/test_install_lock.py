@@ -3,6 +3,7 @@ machine the test workers open the original environment together, and every
 apt-get but one failed on dpkg's lock)."""
 import os
 import subprocess
+import time
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 INSTALL = os.path.join(REPO, 'tools', 'install.sh')
@@ -49,14 +50,23 @@ def test_the_overlay_build_takes_the_same_lock(tmp_path, monkeypatch):
     monkeypatch.setattr(debian_packages, 'LOCK', str(tmp_path / 'exp_assignment2-install.lock'))
     holder = subprocess.Popen(['bash', '-c', HOLDER, 'holder', 'shell'],
                               env=dict(os.environ, LOG=str(log), TMPDIR=str(tmp_path)))
-    while not log.exists():         # the shell's installer holds the lock
-        pass
-    asked = []
-    monkeypatch.setattr(debian_packages, 'missing',
-                        lambda packages: asked.append(log.read_text()) or ['libfoo-dev'])
-    monkeypatch.setattr(debian_packages, '_apt_install',
-                        lambda needed: log.open('a').write('apt-get %s\n' % needed[0]))
-    debian_packages.install(['libfoo-dev'])
-    assert holder.wait(20) == 0
+    try:
+        deadline = time.monotonic() + 20.0
+        while not log.exists():         # the shell's installer holds the lock
+            assert time.monotonic() < deadline, 'the holder never took the lock'
+            time.sleep(0.01)
+        asked = []
+        monkeypatch.setattr(debian_packages, 'missing',
+                            lambda packages: asked.append(log.read_text()) or ['libfoo-dev'])
+
+        def apt_install(needed):
+            with log.open('a') as f:
+                f.write('apt-get %s\n' % needed[0])
+        monkeypatch.setattr(debian_packages, '_apt_install', apt_install)
+        debian_packages.install(['libfoo-dev'])
+        assert holder.wait(20) == 0
+    finally:
+        if holder.poll() is None:
+            holder.kill()
     assert log.read_text().splitlines() == ['start shell', 'end shell', 'apt-get libfoo-dev']
     assert asked[-1] == 'start shell\nend shell\n'      # asked again once the lock was free

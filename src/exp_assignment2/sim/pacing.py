@@ -62,9 +62,14 @@ class FramePace(object):
     any frame, announces it, so that its first frames wait too); before a new
     frame, :meth:`wait` holds the simulation while a consumer still has
     ``window`` frames unacknowledged. Consumers that acknowledge nothing are
-    not waited for; one silent for ``patience`` wall seconds (dead, being
-    restarted, stopped in a debugger) is not waited for until it acknowledges
-    again, and ``log`` says so once.
+    not waited for. One that a wait has held for ``patience`` wall seconds
+    with no acknowledgement (dead, being restarted, stopped in a debugger) is
+    not waited for until it acknowledges again, and ``log`` says so once; a
+    consumer that joins (or comes back) is counted from the newest frame
+    sent, so that it is not behind at once. An acknowledgement of a frame
+    newer than any sent since the last :meth:`reset` (one still on its way
+    when time went back, or a latched one replayed to a new simulator) is
+    ignored.
 
     :param log: the host's logger (``info``), or None
     :param now: wall clock (s)
@@ -74,15 +79,21 @@ class FramePace(object):
         self.window, self.patience, self.now, self.log = window, patience, now, log
         self.cond = threading.Condition()
         self.sent = collections.deque()     # stamps (ns) of frames handed over, oldest first
+        self.newest = -1                    # the newest stamp sent since the last reset
         self.consumers = {}                 # name -> [last stamp done (ns), wall time, waited for]
 
     def done(self, consumer, stamp_ns):
         """``consumer`` has finished with the frame stamped ``stamp_ns``."""
         with self.cond:
+            if stamp_ns > max(self.newest, 0):
+                return                      # a frame from before the last reset
+            stamp_ns = stamp_ns or -1       # 0: none yet (a frame stamped 0 counts as unseen)
             entry = self.consumers.get(consumer)
-            if (entry is None or not entry[2]) and self.log is not None:
-                self.log.info('camera: %s acknowledges frames: the simulation waits for it'
-                              % consumer)
+            if entry is None or not entry[2]:
+                stamp_ns = max(stamp_ns, self.newest)
+                if self.log is not None:
+                    self.log.info('camera: %s acknowledges frames: the simulation waits for it'
+                                  % consumer)
             self.consumers[consumer] = [stamp_ns, self.now(), True]
             self.cond.notify_all()
 
@@ -94,38 +105,41 @@ class FramePace(object):
                 late.append(name)
         return late
 
-    def wait(self, stop=None):
-        """Before a frame: wait while a consumer is ``window`` frames behind
-        (or until ``stop`` is set)."""
+    def wait(self):
+        """Before a frame: wait while a consumer is ``window`` frames behind."""
         with self.cond:
+            started = self.now()
             while True:
                 late = self._behind()
-                if not late or (stop is not None and stop.is_set()):
+                if not late:
                     return
                 now = self.now()
+                let_go = False
                 for name in late:
                     entry = self.consumers[name]
-                    if now - entry[1] >= self.patience:
-                        entry[2] = False
+                    held = now - max(entry[1], started)
+                    if held >= self.patience:
+                        entry[2], let_go = False, True
                         if self.log is not None:
                             self.log.info('camera: %s acknowledged no frame for %.1f s: not '
-                                          'waiting for it' % (name, now - entry[1]))
-                self.cond.wait(min(0.1, self.patience))
+                                          'waiting for it' % (name, held))
+                if not let_go:
+                    self.cond.wait(min(0.1, self.patience))
 
     def sent_frame(self, stamp_ns):
         """A frame stamped ``stamp_ns`` is handed over."""
         with self.cond:
             self.sent.append(stamp_ns)
-            oldest = min((c[0] for c in self.consumers.values()), default=stamp_ns)
+            self.newest = stamp_ns
+            oldest = min((c[0] for c in self.consumers.values() if c[2]), default=stamp_ns)
             while len(self.sent) > self.window and self.sent[0] <= oldest:
-                self.sent.popleft()
-            while len(self.sent) > 1000:        # nobody acknowledges: keep it bounded
                 self.sent.popleft()
 
     def reset(self):
         """Time went back (reset_simulation): forget the stamps."""
         with self.cond:
             self.sent.clear()
+            self.newest = -1
             for entry in self.consumers.values():
                 entry[0] = -1
             self.cond.notify_all()

@@ -53,7 +53,8 @@ def _apt_install(needed):
           flush=True)
     sudo = [] if os.geteuid() == 0 else ['sudo']
     env = dict(os.environ, DEBIAN_FRONTEND='noninteractive')
-    # apt's own lock too: an unattended upgrade may hold it for a while
+    # DPkg::Lock::Timeout: wait for dpkg's lock (an unattended upgrade may hold
+    # it); our own installers are kept apart by LOCK
     apt = ['apt-get', '-o', 'DPkg::Lock::Timeout=600']
     for cmd in (apt + ['update', '-qq'],
                 apt + ['install', '-y', '-qq', '--no-install-recommends'] + needed):

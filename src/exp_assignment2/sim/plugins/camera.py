@@ -27,8 +27,8 @@ import copy
 import math
 
 import cv2
-from sensor_msgs.msg import CameraInfo, CompressedImage, Image
 import rospy
+from sensor_msgs.msg import CameraInfo, CompressedImage, Image
 from std_msgs.msg import Header
 
 from exp_assignment2.sim.camera import CameraSpec

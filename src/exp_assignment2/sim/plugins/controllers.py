@@ -33,7 +33,8 @@ class JointStateController(object):
             raise ValueError('%s/publish_rate must be a positive number, got %r'
                              % (name, rate))
         self.every = Every(float(rate), lambda: self.engine.time)
-        self.pub = manager.publisher(manager.ns + '/joint_states', JointState)
+        self.manager, self.topic = manager, manager.ns + '/joint_states'
+        self.pub = manager.publisher(self.topic, JointState)
 
     def apply(self):
         pass
@@ -46,7 +47,7 @@ class JointStateController(object):
         self.every.reset()
 
     def stop(self):
-        pass            # the publisher is the manager's: a replacement goes on with it
+        self.manager.release(self.topic)    # a replacement made first goes on with it
 
 
 class JointCommandController(object):
@@ -172,14 +173,27 @@ class ControllerManager(object):
         ]
 
     def publisher(self, topic, cls):
-        """The namespace's one publisher of ``topic``, kept while controllers come
-        and go: a controller replaced by a user's YAML (a joint_state_controller
-        with its own publish_rate) that unregistered its publisher and made a
-        new one left subscribers (robot_state_publisher too) with no
-        connection now and then, when the master's two updates crossed."""
-        if topic not in self.publishers:
-            self.publishers[topic] = rospy.Publisher(topic, cls, queue_size=10)
-        return self.publishers[topic]
+        """The namespace's one publisher of ``topic``, shared by the controllers
+        that use it (:meth:`release` when done) and kept while one replaces
+        another: a joint_state_controller replaced by a user's YAML (its own
+        publish_rate) that unregistered its publisher and made a new one left
+        subscribers (robot_state_publisher too) with no connection now and
+        then, when the master's two updates crossed."""
+        entry = self.publishers.get(topic)
+        if entry is None:
+            entry = self.publishers[topic] = [rospy.Publisher(topic, cls, queue_size=10), 0]
+        entry[1] += 1
+        return entry[0]
+
+    def release(self, topic):
+        """A controller is done with ``topic``: the last one unregisters it
+        (an unloaded joint_state_controller takes its topic away, as Gazebo's)."""
+        entry = self.publishers.get(topic)
+        if entry is not None:
+            entry[1] -= 1
+            if entry[1] <= 0:
+                del self.publishers[topic]
+                entry[0].unregister()
 
     def _warn_once(self, name, text):
         if (name, text) not in self.warned:
@@ -219,8 +233,8 @@ class ControllerManager(object):
             self.declared[name] = config
             if name in self.unloaded:
                 continue
-            self._drop(name)
-            controller = self._make(name, config)
+            controller = self._make(name, config)      # before the old one goes: the
+            self._drop(name)                           # topics it shares stay up
             if controller is not None:
                 self.running[name] = controller
         return waiting
@@ -294,5 +308,6 @@ class ControllerManager(object):
             self._drop(name)
         for service in self.services:
             service.shutdown()
-        for pub in self.publishers.values():
+        for pub, _ in self.publishers.values():     # none should be left
             pub.unregister()
+        self.publishers.clear()
