@@ -6,6 +6,7 @@ import signal
 import socket
 import subprocess
 import sys
+import threading
 import time
 
 import pytest
@@ -137,3 +138,48 @@ def test_a_node_ended_in_init_node_ends_quietly(tmp_path):
     code, out = end_while_starting(script, (True, False, True), tmp_path)
     assert 'Traceback' not in out, out
     assert code == 0, (code, out)
+
+
+@pytest.fixture
+def deferred(monkeypatch):
+    """A DeferredShutdown whose signal_shutdown is recorded; the process's
+    handlers are put back afterwards."""
+    calls = []
+    lock = threading.Lock()
+
+    def signal_shutdown(reason):
+        with lock:      # as closing a publisher takes its queue's lock
+            calls.append(reason)
+    monkeypatch.setattr(ending.rospy.core, 'signal_shutdown', signal_shutdown)
+    saved = {sig: signal.getsignal(sig) for sig in ending.DeferredShutdown.SIGNALS}
+    shutdown = ending.DeferredShutdown()
+    shutdown.register()
+    yield shutdown, lock, calls
+    for sig, handler in saved.items():
+        signal.signal(sig, handler)
+
+
+def test_a_signal_in_a_frame_holding_a_lock_shuts_down_once_the_frame_lets_go(deferred):
+    """rospy's own handler would close publishers inside the interrupted
+    frame, which holds one's lock: the node hung until SIGKILL."""
+    shutdown, lock, calls = deferred
+    with lock:      # a publish from the main thread
+        os.kill(os.getpid(), signal.SIGINT)
+        time.sleep(0.2)     # the handler has run, in this frame
+        assert calls == [] and not shutdown.done.is_set()
+    shutdown.wait(5.0)
+    assert calls == ['signal-%d' % signal.SIGINT]
+
+
+def test_sigterm_shuts_down_with_rospys_reason(deferred):
+    shutdown, _, calls = deferred
+    os.kill(os.getpid(), signal.SIGTERM)
+    shutdown.wait(5.0)
+    assert calls == ['signal-%d' % signal.SIGTERM]
+
+
+def test_without_a_signal_leaving_does_not_wait(deferred):
+    shutdown, _, _ = deferred
+    start = time.monotonic()
+    shutdown.wait(5.0)
+    assert time.monotonic() - start < 1.0
