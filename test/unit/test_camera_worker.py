@@ -153,3 +153,25 @@ def test_a_gl_frame_waiting_to_be_published_is_not_drawn_over(engine):
     release.set()
     worker.close()
     assert seen[0] > 1000 and seen[1:] == [0, 0]
+
+
+def test_a_transport_that_fails_to_publish_does_not_stop_the_camera(engine):
+    """rospy raises on a topic its shutdown closed: the frame is dropped with
+    a line, the next ones still go out, and closing does not wait."""
+    worker, camera = FrameWorker('tiny', engine.handle), Recorder()
+    publish = camera.publish
+
+    def failing_once(stamp, bgr):
+        if stamp == 1:
+            raise KeyError('publish() to a closed topic')   # not a frame error
+        publish(stamp, bgr)
+    camera.publish = failing_once
+    del engine.log.lines[:]
+    job = worker.backend.capture(spec())
+    for stamp in range(4):
+        worker.submit(camera, stamp, job)
+    start = time.monotonic()
+    worker.close()
+    assert time.monotonic() - start < 2.0
+    assert [f[0] for f in camera.frames] == [0, 2, 3]
+    assert engine.log.lines == ["camera: frame dropped: 'publish() to a closed topic'"]

@@ -75,7 +75,11 @@ class FrameWorker(object):
                     break
                 camera, when, image = item
                 camera.publish(when, image)
-            except FRAME_ERRORS as exc:
+            except Exception as exc:
+                # whatever the camera's transport raises (rospy: a topic closed
+                # by the shutdown under way): were this thread to end, the
+                # drawing thread would wait on its hand-over for good, and
+                # close() 5 s for it
                 self._dropped(exc)
             finally:
                 self.drawn.task_done()
