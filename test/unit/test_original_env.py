@@ -149,6 +149,36 @@ def test_sitecustomize_runs_the_one_it_shadows_and_is_inert_without_display(tmp_
     assert 'no DISPLAY' in env['EXP2_ORIGINAL_ENV']
 
 
+XMLRPC_SHUTDOWN = '''
+import os, time
+import rosgraph.xmlrpc
+threads = lambda: len(os.listdir('/proc/self/task'))
+before = threads()
+node = rosgraph.xmlrpc.XmlRpcNode(rpc_handler=rosgraph.xmlrpc.XmlRpcHandler())
+node.start()
+while node.uri is None:
+    time.sleep(0.01)
+node.shutdown('done')
+cpu = time.process_time()
+time.sleep(1.5)
+print(threads() - before, round(time.process_time() - cpu, 2))
+'''
+
+
+def test_the_xml_rpc_thread_ends_at_shutdown_as_under_python_2():
+    """Under Python 3, rospy's XML-RPC thread polls its closed socket at
+    100 % of a core once the node shut down; in the shell it ends."""
+    env = original_env(base_env())
+    proc = run(XMLRPC_SHUTDOWN, env)
+    assert proc.returncode == 0, proc.stderr
+    left, cpu = proc.stdout.split()
+    assert int(left) == 0 and float(cpu) < 0.2, proc.stdout
+    # what it replaces: without it, the thread lives on and spins
+    proc = run(XMLRPC_SHUTDOWN, dict(env, EXP2_XMLRPC_END='0'))
+    left, cpu = proc.stdout.split()
+    assert int(left) == 1 and float(cpu) > 0.5, proc.stdout
+
+
 # --- cv2 HighGUI from several threads, on a private X server -----------------
 
 @pytest.fixture(scope='module')

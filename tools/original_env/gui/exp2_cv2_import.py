@@ -1,12 +1,10 @@
-"""Installs :mod:`exp2_cv2_gui` when ``cv2`` is imported: a meta-path finder
-that reacts only to ``import cv2`` (cv2 stays lazy), lets cv2's own loader
-make the module, then replaces its HighGUI functions by wrappers that run on
-the one GUI thread (see exp2_cv2_gui.py for why)."""
+"""Installs :mod:`exp2_cv2_gui` when ``cv2`` is imported (cv2 stays lazy):
+its HighGUI functions are replaced by wrappers that run on the one GUI
+thread (see exp2_cv2_gui.py for why)."""
 import functools
-import sys
-import threading
 
 from exp2_cv2_gui import MARKER, SYNC_FUNCTIONS, GuiThread
+from exp2_import_patch import patch_on_import
 
 
 def patch(cv2):
@@ -35,55 +33,6 @@ def patch(cv2):
     setattr(cv2, MARKER, gui)
 
 
-class _PatchingLoader(object):
-    """Delegates to cv2's own loader, then patches the module it made."""
-
-    def __init__(self, loader):
-        self._loader = loader
-
-    def __getattr__(self, name):
-        return getattr(self._loader, name)
-
-    def create_module(self, spec):
-        return self._loader.create_module(spec)
-
-    def exec_module(self, module):
-        self._loader.exec_module(module)
-        try:
-            patch(sys.modules.get(module.__name__, module))
-        except Exception as exc:  # never break ``import cv2`` itself
-            sys.stderr.write('[cv2 GUI thread] not enabled: %r\n' % (exc,))
-
-
-class _Cv2Finder(object):
-    """Meta-path finder that only reacts to ``import cv2`` (cv2 stays lazy)."""
-
-    def __init__(self):
-        self._local = threading.local()
-
-    def find_spec(self, name, path=None, target=None):
-        if name != 'cv2' or getattr(self._local, 'busy', False):
-            return None
-        self._local.busy = True
-        try:
-            for finder in sys.meta_path:
-                if finder is self or not hasattr(finder, 'find_spec'):
-                    continue
-                spec = finder.find_spec(name, path, target)
-                if spec is not None:
-                    break
-            else:
-                return None
-        finally:
-            self._local.busy = False
-        if spec.loader is not None:
-            spec.loader = _PatchingLoader(spec.loader)
-        return spec
-
-
 def install():
     """Patch cv2 when it gets imported (or now, if it already is)."""
-    if 'cv2' in sys.modules:
-        patch(sys.modules['cv2'])
-    elif not any(isinstance(f, _Cv2Finder) for f in sys.meta_path):
-        sys.meta_path.insert(0, _Cv2Finder())
+    patch_on_import('cv2', patch, 'cv2 GUI thread')

@@ -2,7 +2,7 @@
 
 Python imports ``sitecustomize`` at start-up from the first directory of
 sys.path that has one; this directory is on PYTHONPATH only inside that
-environment. It does three things:
+environment. It does four things:
 
 1. runs the ``sitecustomize`` it shadows (Debian's, or one further down
    PYTHONPATH), so nothing the system configured is lost;
@@ -13,7 +13,10 @@ environment. It does three things:
 3. when a display is configured (DISPLAY, WAYLAND_DISPLAY or an explicit
    QT_QPA_PLATFORM such as ``offscreen``) and EXP2_CV2_GUI_THREAD is not 0,
    arranges for cv2's HighGUI calls to run on one GUI thread once cv2 is
-   imported (see exp2_cv2_gui.py for why). cv2 itself is not imported here.
+   imported (see exp2_cv2_gui.py for why). cv2 itself is not imported here;
+4. unless EXP2_XMLRPC_END is 0, arranges for rospy's XML-RPC thread to end
+   when the node shuts down, as it did under Python 2, instead of polling a
+   closed socket at 100 % of a core (exp2_xmlrpc_end.py).
 
 Without a display nothing is changed: cv2.imshow then behaves as OpenCV's Qt
 backend does, which aborts the whole process ("could not connect to display",
@@ -50,3 +53,6 @@ if os.environ.get('EXP2_TAB_RULE', '1') != '0':
 if os.environ.get('EXP2_CV2_GUI_THREAD', '1') != '0' and _display_configured():
     import exp2_cv2_import
     exp2_cv2_import.install()
+if os.environ.get('EXP2_XMLRPC_END', '1') != '0':
+    import exp2_xmlrpc_end
+    exp2_xmlrpc_end.install()
