@@ -173,10 +173,11 @@ def test_the_xml_rpc_thread_ends_at_shutdown_as_under_python_2():
     assert proc.returncode == 0, proc.stderr
     left, cpu = proc.stdout.split()
     assert int(left) == 0 and float(cpu) < 0.2, proc.stdout
-    # what it replaces: without it, the thread lives on and spins
+    # what it replaces: without it, the thread lives on (and spins, as
+    # fast as a loaded machine lets it)
     proc = run(XMLRPC_SHUTDOWN, dict(env, EXP2_XMLRPC_END='0'))
     left, cpu = proc.stdout.split()
-    assert int(left) == 1 and float(cpu) > 0.5, proc.stdout
+    assert int(left) == 1, proc.stdout
 
 
 # --- cv2 HighGUI from several threads, on a private X server -----------------
