@@ -14,7 +14,8 @@ from actionlib_msgs.msg import GoalID, GoalStatus
 from rosgraph_msgs.msg import Log
 from std_srvs.srv import Empty
 
-from checks import Pose, Rosout, SimpleClient, clock, finished, wait_for_subscribers, wait_until
+from checks import (Pose, Rosout, SimpleClient, clock, eventually, finished, wait_for_subscribers,
+                    wait_until)
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 
@@ -33,6 +34,18 @@ class TestPlanningAction(unittest.TestCase):
         cls.robot_pose, cls.ball_pose = Pose('/robot/odom'), Pose('/ball/odom')
         cls.rosout = Rosout()
 
+    def assert_at_rest_near(self, pose, x, y):
+        """The body's odometry comes to within 0.15 m of (x, y): the newest
+        message, waited for, not the one at hand when the result came. Under
+        load this checker's odometry queue can be a simulated second or two
+        behind its result (the ball 0.21 m from its goal by that queue, once,
+        three rostests at a time at 20x)."""
+        def distance():
+            px, py, _, _ = pose.xyzyaw()
+            return math.hypot(px - x, py - y)
+        self.assertTrue(eventually(lambda: distance() < 0.15, 5.0, 5.0),
+                        '%.2f m from (%g, %g)' % (distance(), x, y))
+
     def run_goal(self, client, goal, seconds=120.0):     # the servers' own goal_timeout
         stats = []
         client.send_goal(goal, feedback_cb=lambda fb: stats.append(fb.stat))
@@ -46,17 +59,14 @@ class TestPlanningAction(unittest.TestCase):
         # just before the result may arrive after it, when the client drops it
         self.assertEqual([s for s in FEEDBACK[:3] if s in stats], list(FEEDBACK[:3]))
         self.assertEqual(self.robot.get_goal_status_text(), 'Target reached!')
-        self.robot_pose.next()
-        x, y, _, _ = self.robot_pose.xyzyaw()
-        self.assertLess(math.hypot(x + 3.0, y - 5.0), 0.15)
+        self.assert_at_rest_near(self.robot_pose, -3.0, 5.0)
 
     def test_ball_goal_moves_the_ball_at_the_height_of_z(self):
         state, stats = self.run_goal(self.ball, make_goal(2.0, -3.0, 0.5))
         self.assertEqual(state, GoalStatus.SUCCEEDED)
         self.assertIn('Reaching the goal', stats)
-        x, y, z, _ = self.ball_pose.xyzyaw()
-        self.assertLess(math.hypot(x - 2.0, y + 3.0), 0.15)
-        self.assertAlmostEqual(z, 0.5)
+        self.assert_at_rest_near(self.ball_pose, 2.0, -3.0)
+        self.assertAlmostEqual(self.ball_pose.xyzyaw()[2], 0.5)
         for height in (20.0, -1.0, 0.5):
             state, _ = self.run_goal(self.ball, make_goal(2.0, -3.0, height))
             self.assertEqual(state, GoalStatus.SUCCEEDED)
@@ -129,9 +139,7 @@ class TestPlanningAction(unittest.TestCase):
         self.assertTrue(finished(self.robot, 120.0))
         self.assertEqual(self.robot.get_state(), GoalStatus.SUCCEEDED,
                          self.robot.get_goal_status_text())
-        self.robot_pose.next()
-        x, y, _, _ = self.robot_pose.xyzyaw()
-        self.assertLess(math.hypot(x + 2.0, y - 3.0), 0.15)
+        self.assert_at_rest_near(self.robot_pose, -2.0, 3.0)
         state, _ = self.run_goal(self.ball, make_goal(-2.0, 2.0, 0.5))     # the other server too
         self.assertEqual(state, GoalStatus.SUCCEEDED, self.ball.get_goal_status_text())
 
