@@ -74,6 +74,9 @@ class TestPlanningAction(unittest.TestCase):
 
     def test_a_goal_is_preempted_by_cancel(self):
         self.robot.send_goal(make_goal(7.0, -7.0))
+        # a goal cancelled before the server took it is RECALLED, not
+        # PREEMPTED: 1 s of ROS time at 20x was once too short for that
+        self.assertTrue(eventually(lambda: self.robot.get_state() == GoalStatus.ACTIVE))
         clock().sleep(1.0)
         self.robot.cancel_goal()
         self.assertTrue(finished(self.robot, 10.0))
