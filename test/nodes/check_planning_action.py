@@ -116,7 +116,7 @@ class TestPlanningAction(unittest.TestCase):
         self.assertEqual(self.robot.get_state(), GoalStatus.SUCCEEDED,
                          self.robot.get_goal_status_text())
 
-    def test_fifty_cancels_of_an_unknown_goal_make_at_most_two_lines(self):
+    def test_fifty_cancels_of_an_unknown_goal_make_a_few_lines(self):
         cancel = rospy.Publisher('/reaching_goal/cancel', GoalID, queue_size=100)
         wait_for_subscribers(cancel)
         self.ball.send_goal(make_goal(-6.0, -6.0, 0.5))
@@ -132,7 +132,10 @@ class TestPlanningAction(unittest.TestCase):
         lines = [m.msg for m in self.rosout.lines(node='/go_to_point_ball')[before:]
                  if 'cancel' in m.msg]
         rospy.loginfo('50 cancels of an unknown goal: %d lines: %s', len(lines), lines)
-        self.assertTrue(1 <= len(lines) <= 2, lines)
+        # one line, then one a wall second while the burst is still being
+        # read: reading it took up to 3 s with three rostests at a time
+        # (42-47 of the 50 arrived: ROS drops what a loaded subscriber misses)
+        self.assertTrue(1 <= len(lines) <= 5, lines)
         self.assertTrue(all(line.startswith('/reaching_goal/cancel: ') for line in lines), lines)
 
     def test_reset_simulation_during_a_goal_sets_time_back_and_the_goal_still_arrives(self):
