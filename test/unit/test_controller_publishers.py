@@ -7,7 +7,7 @@ from types import SimpleNamespace
 import pytest
 
 pytest.importorskip('controller_manager_msgs')     # the workspace's messages
-from exp_assignment2.sim.plugins import controllers  # noqa: E402
+from exp_assignment2.sim.plugins import controller_manager  # noqa: E402
 
 JSC = 'joint_state_controller/JointStateController'
 
@@ -32,12 +32,12 @@ class FakeService(object):
 
 
 def test_a_replaced_joint_state_controller_goes_on_with_the_same_publisher(monkeypatch):
-    monkeypatch.setattr(controllers.rospy, 'Publisher', FakePublisher)
-    monkeypatch.setattr(controllers.rospy, 'Service', FakeService)
+    monkeypatch.setattr(controller_manager.rospy, 'Publisher', FakePublisher)
+    monkeypatch.setattr(controller_manager.rospy, 'Service', FakeService)
     FakePublisher.made = []
     plugin = SimpleNamespace(model=SimpleNamespace(name='robot'),
                              engine=SimpleNamespace(time=0.0, call_and_wait=None))
-    manager = controllers.ControllerManager(plugin, '/robot')
+    manager = controller_manager.ControllerManager(plugin, '/robot')
     manager.discover({'joint_state_controller': {'type': JSC, 'publish_rate': 50}})
     first = manager.running['joint_state_controller']
     manager.discover({'joint_state_controller': {'type': JSC, 'publish_rate': 20}})
@@ -50,12 +50,12 @@ def test_a_replaced_joint_state_controller_goes_on_with_the_same_publisher(monke
 
 
 def test_an_unloaded_joint_state_controller_takes_its_topic_away(monkeypatch):
-    monkeypatch.setattr(controllers.rospy, 'Publisher', FakePublisher)
-    monkeypatch.setattr(controllers.rospy, 'Service', FakeService)
+    monkeypatch.setattr(controller_manager.rospy, 'Publisher', FakePublisher)
+    monkeypatch.setattr(controller_manager.rospy, 'Service', FakeService)
     FakePublisher.made = []
     plugin = SimpleNamespace(model=SimpleNamespace(name='robot'),
                              engine=SimpleNamespace(time=0.0, call_and_wait=None))
-    manager = controllers.ControllerManager(plugin, '/robot')
+    manager = controller_manager.ControllerManager(plugin, '/robot')
     manager.discover({'joint_state_controller': {'type': JSC, 'publish_rate': 50}})
     assert manager.unload('joint_state_controller')
     assert [p.unregistered for p in FakePublisher.made] == [True]

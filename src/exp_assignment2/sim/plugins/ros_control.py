@@ -31,7 +31,8 @@ import rospy
 
 from exp_assignment2.sim.plugins import param_watch
 from exp_assignment2.sim.plugins.base import Plugin
-from exp_assignment2.sim.plugins.controllers import CONTROLLER_TYPES, ControllerManager
+from exp_assignment2.sim.plugins.controller_manager import ControllerManager
+from exp_assignment2.sim.plugins.controllers import CONTROLLER_TYPES
 
 SETTLE = 0.2      # wall s without a parameter update before the namespace is read again
 PATIENCE = 2.0    # wall s more for a joint controller whose joint is not set yet
