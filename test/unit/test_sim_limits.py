@@ -24,6 +24,8 @@ def test_what_the_launch_files_pass_is_accepted():
                  cmd_timeout=None)['camera_width'] is None
     assert check(camera_width='', camera_height='', camera_rate='')['camera_width'] == ''
     assert check(robot_ns='robot2')['robot_ns'] == 'robot2', 'other keys pass through'
+    # gazebo_ros' own, as empty_world.launch sets them
+    assert check(pub_clock_frequency=100, enable_ros_network=True)['pub_clock_frequency'] == 100.0
 
 
 
@@ -36,7 +38,8 @@ def test_what_the_launch_files_pass_is_accepted():
     ('real_time_factor', float('inf'), 'inf'), ('time_step', 0, '0'),
     ('renderer', 'bogus', 'bogus'), ('paused', 'yes', 'yes'), ('cmd_timeout', -0.1, '-0.1'),
     ('start_timeout', 0, '0'), ('max_real_time_factor', -1, '-1'),
-    ('max_real_time_factor', 'fast', 'fast')])
+    ('max_real_time_factor', 'fast', 'fast'), ('pub_clock_frequency', -1, '-1'),
+    ('pub_clock_frequency', float('nan'), 'nan'), ('enable_ros_network', 'no', 'no')])
 def test_a_bad_value_is_one_line_naming_it_and_what_is_accepted(name, value, shown):
     with pytest.raises(ParameterError) as refused:
         check(**{name: value})

@@ -39,7 +39,9 @@ NODE_PARAMS = {'real_time_factor': 1.0, 'max_real_time_factor': MAX_REAL_TIME_FA
                'camera_width': None, 'camera_height': None, 'camera_rate': None,
                'camera_hfov': None, 'jpeg_quality': 80, 'wait_for_camera': False,
                'start_timeout': 30.0, 'hidden': [], 'urdf_dir': None, 'world_file': None,
-               'robot_ns': '', 'poses': {}}
+               'robot_ns': '', 'poses': {},
+               # gazebo_ros' own (empty_world.launch sets them under /gazebo)
+               'pub_clock_frequency': 0.0, 'enable_ros_network': True}
 
 
 # Gazebo's worlds/empty.world: a ground plane and a sun
@@ -102,6 +104,9 @@ class SimulatorNode(object):
         self.clock_pub = rospy.Publisher('/clock', Clock, queue_size=10)
         self.set_time = own_clock()                 # this node's ROS time, without /clock
         self.clock_wall, self.clock_ns = -CLOCK_WALL_PERIOD, -1
+        # gazebo_ros' pub_clock_frequency: at most that often in simulated time
+        frequency = p['pub_clock_frequency']
+        self.clock_period_ns = int(round(1e9 / frequency)) if frequency else 0
         watch_clock(lambda: self.engine.time)      # an ERROR naming a second /clock publisher
         self.engine.step_listeners.append(lambda engine: self.publish_clock())
         hidden = set(p['hidden'] or [])
@@ -118,12 +123,17 @@ class SimulatorNode(object):
         except ValueError:
             self.engine.close()
             raise
-        self.world = GazeboWorld(self.engine, sdf_to_urdf=sdf_to_urdf)
-        self.state = GazeboState(self.engine, self.world)
-        # an SDF world (gazebo_ros' gzserver) is drawn in Gazebo's frame, as
-        # gzclient shows it; the package's worlds in odom, as its rviz configs
-        self.markers = WorldMarkers(self.engine,
-                                    'world' if p['world_file'] is not None else 'odom')
+        self.world = self.state = self.markers = None
+        if p['enable_ros_network']:
+            self.world = GazeboWorld(self.engine, sdf_to_urdf=sdf_to_urdf)
+            self.state = GazeboState(self.engine, self.world)
+            # an SDF world (gazebo_ros' gzserver) is drawn in Gazebo's frame, as
+            # gzclient shows it; the package's worlds in odom, as its rviz configs
+            self.markers = WorldMarkers(self.engine,
+                                        'world' if p['world_file'] is not None else 'odom')
+        else:       # as gazebo_ros: none of its services or topics; /clock goes on
+            rospy.loginfo('simulator: enable_ros_network is false: no /gazebo services '
+                          'or topics, only /clock')
         pacer = self.engine.pacer
         rospy.loginfo('simulator: %d models, step %.4f s, real_time_factor %g%s%s',
                       len(self.engine.models), self.engine.time_step, pacer.rtf,
@@ -166,7 +176,8 @@ class SimulatorNode(object):
             return f.read()
 
     def publish_clock(self, always=False):
-        """/clock after a step: every step, but at most one a millisecond of
+        """/clock after a step: every step (or every 1/``pub_clock_frequency``
+        s of simulated time, as gazebo_ros), but at most one a millisecond of
         wall time (``always``: now, as when the world stops). Faster than that
         no node can react to a tick anyway, and every node receives every
         /clock: at 20x, 2000 messages a wall second each."""
@@ -174,7 +185,9 @@ class SimulatorNode(object):
         now = rospy.Time(ns // 1000000000, ns % 1000000000)
         self.set_time(now)
         wall = time.monotonic()
-        if always or wall - self.clock_wall >= CLOCK_WALL_PERIOD or ns < self.clock_ns:
+        if always or ns < self.clock_ns or (
+                wall - self.clock_wall >= CLOCK_WALL_PERIOD
+                and ns - self.clock_ns >= self.clock_period_ns):
             self.clock_wall, self.clock_ns = wall, ns
             self.clock_pub.publish(Clock(clock=now))
 
@@ -205,8 +218,9 @@ class SimulatorNode(object):
         self.engine.run(idle=lambda: self.publish_clock(always=True))
 
     def close(self):
-        self.state.close()
-        self.world.close()
+        for interface in (self.state, self.world):
+            if interface is not None:
+                interface.close()
         self.engine.close()
 
 

@@ -86,7 +86,8 @@ def _given(value):
 def check_node_params(params, max_size=gl_max_image_size):
     """The simulator node's ``params`` (``real_time_factor``, ``time_step``,
     ``renderer``, ``paused``, ``wait_for_camera``, ``cmd_timeout``,
-    ``start_timeout``, ``camera_*``; None or '': not given), checked and
+    ``start_timeout``, ``camera_*``, gazebo_ros' ``pub_clock_frequency`` and
+    ``enable_ros_network``; None or '': not given), checked and
     normalised; other keys are passed through.
 
     :param max_size: ``max_size()`` is the largest image side the renderer
@@ -110,8 +111,8 @@ def check_node_params(params, max_size=gl_max_image_size):
                              low_open=True)
     if params['renderer'] not in RENDERERS:
         _refuse('renderer', params['renderer'], ', '.join(RENDERERS))
-    for name in ('paused', 'wait_for_camera'):
-        if not isinstance(params[name], bool):
+    for name in ('paused', 'wait_for_camera', 'enable_ros_network'):
+        if name in params and not isinstance(params[name], bool):
             _refuse(name, params[name], 'true or false')
     out['start_timeout'] = _real(params, 'start_timeout', 0.0, math.inf, 'seconds > 0',
                                  low_open=True)
@@ -126,6 +127,10 @@ def check_node_params(params, max_size=gl_max_image_size):
         out['camera_rate'] = _real(params, 'camera_rate', 0.0, most,
                                    'frames per second in (0, %g] (one per time step at most)'
                                    % most, low_open=True)
+    if _given(params.get('pub_clock_frequency')):
+        out['pub_clock_frequency'] = _real(params, 'pub_clock_frequency', 0.0, math.inf,
+                                           'a number >= 0 (Hz of simulated time; 0: every '
+                                           'step)')
     if _given(params['camera_hfov']):
         out['camera_hfov'] = _real(params, 'camera_hfov', 1.0, 179.0,
                                    'degrees in [1, 179]')
