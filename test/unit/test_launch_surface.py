@@ -228,6 +228,37 @@ def test_xacro_runs_the_students_robot_with_find_resolved(tmp_path):
     assert '${' not in urdf and 'xacro:' not in urdf.replace('xmlns:xacro', '')
 
 
+def test_xacro_reads_yaml_as_noetics_does(tmp_path):
+    """load_yaml under Debian's PyYAML 6 (1.13's own passes no loader): dotted
+    access, !degrees and !radians, and a missing key named."""
+    if subprocess.run(['/usr/bin/python3', '-c', 'import xacro']).returncode != 0:
+        pytest.skip('xacro not installed for /usr/bin/python3 (tools/run original-env '
+                    'installs it)')
+    (tmp_path / 'dims.yaml').write_text('chassis: {mass: 5.0, size: [0.5, 0.3]}\n'
+                                        'neck: {upper: !degrees 45, lower: !radians -pi/4}\n')
+    robot = tmp_path / 'robot.xacro'
+
+    def run(upper):
+        robot.write_text(
+            '<robot name="dog" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+            '<xacro:property name="dims" value="${load_yaml(\'dims.yaml\')}"/>'
+            '<link name="chassis"><inertial><mass value="${dims[\'chassis\'][\'mass\']}"/>'
+            '<origin xyz="${dims.chassis.size[0]} 0 0"/></inertial></link>'
+            '<joint name="neck" type="revolute"><parent link="chassis"/><child link="head"/>'
+            '<limit upper="${%s}" lower="${dims.neck.lower}" effort="1" velocity="1"/>'
+            '</joint><link name="head"/></robot>' % upper)
+        return subprocess.run(['/usr/bin/python3', os.path.join(PACKAGES, 'xacro', 'xacro'),
+                               str(robot)], env=dict(os.environ, EXP2_REPO=REPO),
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                              universal_newlines=True, timeout=60)
+    proc = run('dims.neck.upper')
+    assert proc.returncode == 0, proc.stderr
+    assert '<mass value="5.0"/>' in proc.stdout and '<origin xyz="0.5 0 0"/>' in proc.stdout
+    assert 'lower="-0.785398163397' in proc.stdout and 'upper="0.785398163397' in proc.stdout
+    proc = run('dims.neck.nope')
+    assert proc.returncode != 0 and "No such key: 'nope'" in proc.stderr
+
+
 # the viewer
 
 def test_viewer_frames_and_display():
