@@ -9,6 +9,9 @@ the API the package (and typical SMACH code) uses is provided:
 * :class:`CBState` and :func:`cb_interface`,
 * :class:`StateMachine` (``with sm:`` + :meth:`StateMachine.add`), userdata
   with remapping, start/transition/termination callbacks,
+* :class:`Sequence` (states in the order added, joined by a connector
+  outcome) and :class:`Concurrence` (states at once, an outcome map or
+  callback, a child termination callback),
 * the error classes :class:`InvalidStateError`,
   :class:`InvalidTransitionError`, :class:`InvalidUserCodeError`.
 
@@ -18,14 +21,17 @@ state returning an outcome it did not register is an
 :class:`InvalidTransitionError`, and an exception from user code is wrapped
 in :class:`InvalidUserCodeError`.
 """
-from exp_assignment2.minismach.machine import StateMachine
-from exp_assignment2.minismach.states import (CBState, InvalidConstructionError, InvalidStateError,
-                                              InvalidTransitionError, InvalidUserCodeError,
-                                              Remapper, SmachError, State, UserData,
-                                              cb_interface)
+# relative imports: tools/original_env's smach loads this package by its path
+# when ``exp_assignment2`` is a user's package of that name
+from .concurrence import Concurrence
+from .machine import Container, Sequence, StateMachine
+from .states import (CBState, InvalidConstructionError, InvalidStateError,
+                     InvalidTransitionError, InvalidUserCodeError, Remapper, SmachError, State,
+                     UserData, cb_interface)
 
 __all__ = [
-    'State', 'CBState', 'cb_interface', 'StateMachine', 'UserData',
+    'State', 'CBState', 'cb_interface', 'StateMachine', 'Sequence', 'Concurrence',
+    'Container', 'UserData',
     'Remapper', 'SmachError', 'InvalidStateError', 'InvalidTransitionError',
     'InvalidUserCodeError', 'InvalidConstructionError',
 ]

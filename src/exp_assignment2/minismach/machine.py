@@ -1,14 +1,16 @@
-"""SMACH's StateMachine container (see :mod:`exp_assignment2.minismach`)."""
+"""SMACH's StateMachine and Sequence containers (see :mod:`exp_assignment2.minismach`)."""
 import threading
 import traceback
 
-from exp_assignment2.minismach.states import (InvalidConstructionError, InvalidStateError,
-                                              InvalidTransitionError, InvalidUserCodeError,
-                                              Remapper, SmachError, State, UserData)
+from .states import (InvalidConstructionError, InvalidStateError, InvalidTransitionError,
+                     InvalidUserCodeError, Remapper, SmachError, State, UserData)
 
 
-class StateMachine(State):
-    """A container running one state at a time along labelled transitions."""
+class Container(State):
+    """What every container shares: its userdata, children built in a
+    ``with container:`` block (``Kind.add`` adds to the innermost one open),
+    and start/transition/termination callbacks (``cb(userdata,
+    active_states, *args)``, as SMACH calls them)."""
 
     _construction_stack = []
     _construction_lock = threading.RLock()
@@ -17,73 +19,48 @@ class StateMachine(State):
         State.__init__(self, outcomes, input_keys, output_keys)
         self.userdata = UserData()
         self._states = {}
-        self._order = []
-        self._transitions = {}
         self._remappings = {}
-        self._initial_state_label = None
-        self._current_label = None
-        self._current_state = None
-        self._lock = threading.RLock()
         self._start_cbs = []
         self._transition_cbs = []
         self._termination_cbs = []
 
-    # construction
     def __enter__(self):
-        StateMachine._construction_lock.acquire()
-        StateMachine._construction_stack.append(self)
+        Container._construction_lock.acquire()
+        Container._construction_stack.append(self)
         return self
 
     def __exit__(self, exc_type, exc, tb):
-        StateMachine._construction_stack.pop()
-        StateMachine._construction_lock.release()
+        Container._construction_stack.pop()
+        Container._construction_lock.release()
         return False
 
-    @staticmethod
-    def add(label, state, transitions=None, remapping=None):
-        """Add ``state`` as ``label`` to the container opened with ``with``."""
-        if not StateMachine._construction_stack:
+    @classmethod
+    def _opened(cls, label, state):
+        """The innermost container opened with ``with``, which must be a
+        ``cls``, checked for a new child ``state`` labelled ``label``."""
+        if not Container._construction_stack:
             raise InvalidConstructionError(
-                'StateMachine.add must be called inside a "with sm:" block')
-        sm = StateMachine._construction_stack[-1]
+                '%s.add must be called inside a "with container:" block' % cls.__name__)
+        container = Container._construction_stack[-1]
+        if not isinstance(container, cls):
+            raise InvalidConstructionError(
+                "%s.add('%s', ...) inside a %s's with block" % (
+                    cls.__name__, label, type(container).__name__))
         if not isinstance(state, State):
             raise InvalidStateError("State '%s' is not a State: %r" % (label, state))
-        if label in sm._states:
+        if label in container._states:
             raise InvalidStateError("A state labelled '%s' already exists" % label)
-        if label in sm._outcomes:
+        if label in container._outcomes:
             raise InvalidStateError(
                 "State label '%s' is also an outcome of its container" % label)
-        transitions = dict(transitions or {})
-        for outcome in state.get_registered_outcomes():
-            transitions.setdefault(outcome, None)
-        sm._states[label] = state
-        sm._order.append(label)
-        sm._transitions[label] = transitions
-        sm._remappings[label] = dict(remapping or {})
-        if sm._initial_state_label is None:
-            sm._initial_state_label = label
-        return state
-
-    def set_initial_state(self, initial_states, userdata=None):
-        """Start at ``initial_states[0]`` instead of the first state added."""
-        self._initial_state_label = initial_states[0]
-        if userdata is not None:
-            self.userdata.update(userdata)
+        return container
 
     def get_children(self):
         return dict(self._states)
 
-    def get_initial_states(self):
-        return [self._initial_state_label]
+    def __getitem__(self, label):
+        return self._states[label]
 
-    def get_active_states(self):
-        with self._lock:
-            return [self._current_label] if self._current_label else []
-
-    def is_running(self):
-        return self._current_label is not None
-
-    # callbacks (same signatures as smach: cb(userdata, active_states, *args))
     def register_start_cb(self, cb, cb_args=()):
         self._start_cbs.append((cb, list(cb_args)))
 
@@ -101,6 +78,67 @@ class StateMachine(State):
                 raise InvalidUserCodeError(
                     'Could not execute callback %r: %s\n%s'
                     % (cb, exc, traceback.format_exc()))
+
+    def _child_view(self, label):
+        state = self._states[label]
+        return Remapper(self.userdata, state.get_registered_input_keys(),
+                        state.get_registered_output_keys(), self._remappings[label])
+
+    def _copy_in(self, parent_ud):
+        if parent_ud is not None:
+            for key in self._input_keys:
+                if key in parent_ud:
+                    self.userdata[key] = parent_ud[key]
+
+    def _copy_out(self, parent_ud):
+        if parent_ud is not None:
+            for key in self._output_keys:
+                if key in self.userdata:
+                    parent_ud[key] = self.userdata[key]
+
+
+class StateMachine(Container):
+    """A container running one state at a time along labelled transitions."""
+
+    def __init__(self, outcomes, input_keys=(), output_keys=()):
+        Container.__init__(self, outcomes, input_keys, output_keys)
+        self._order = []
+        self._transitions = {}
+        self._initial_state_label = None
+        self._current_label = None
+        self._current_state = None
+        self._lock = threading.RLock()
+
+    @staticmethod
+    def add(label, state, transitions=None, remapping=None):
+        """Add ``state`` as ``label`` to the container opened with ``with``."""
+        sm = StateMachine._opened(label, state)
+        transitions = dict(transitions or {})
+        for outcome in state.get_registered_outcomes():
+            transitions.setdefault(outcome, None)
+        sm._states[label] = state
+        sm._order.append(label)
+        sm._transitions[label] = transitions
+        sm._remappings[label] = dict(remapping or {})
+        if sm._initial_state_label is None:
+            sm._initial_state_label = label
+        return state
+
+    def set_initial_state(self, initial_states, userdata=None):
+        """Start at ``initial_states[0]`` instead of the first state added."""
+        self._initial_state_label = initial_states[0]
+        if userdata is not None:
+            self.userdata.update(userdata)
+
+    def get_initial_states(self):
+        return [self._initial_state_label]
+
+    def get_active_states(self):
+        with self._lock:
+            return [self._current_label] if self._current_label else []
+
+    def is_running(self):
+        return self._current_label is not None
 
     # preemption reaches the running child
     def request_preempt(self):
@@ -132,10 +170,7 @@ class StateMachine(State):
     def execute(self, parent_ud=None):
         """Run from the initial state until a container outcome is reached."""
         self.check_consistency()
-        if parent_ud is not None:
-            for key in self._input_keys:
-                if key in parent_ud:
-                    self.userdata[key] = parent_ud[key]
+        self._copy_in(parent_ud)
         with self._lock:
             self._current_label = self._initial_state_label
             self._current_state = self._states[self._current_label]
@@ -149,10 +184,7 @@ class StateMachine(State):
                 self._current_label = None
                 self._current_state = None
             self.service_preempt()
-        if parent_ud is not None:
-            for key in self._output_keys:
-                if key in self.userdata:
-                    parent_ud[key] = self.userdata[key]
+        self._copy_out(parent_ud)
         self._call_cbs(self._termination_cbs, [], outcome)
         return outcome
 
@@ -161,10 +193,8 @@ class StateMachine(State):
         label, state = self._current_label, self._current_state
         if self.preempt_requested():
             state.request_preempt()
-        ud = Remapper(self.userdata, state.get_registered_input_keys(),
-                      state.get_registered_output_keys(), self._remappings[label])
         try:
-            outcome = state.execute(ud)
+            outcome = state.execute(self._child_view(label))
         except SmachError:
             raise
         except Exception as exc:
@@ -186,3 +216,23 @@ class StateMachine(State):
             self._call_cbs(self._transition_cbs, [final])
             return None
         return final
+
+
+class Sequence(StateMachine):
+    """A StateMachine whose states run in the order they are added: each
+    one's ``connector_outcome`` leads to the next (the last one's is the
+    container's outcome of that name); ``transitions`` add other ways out."""
+
+    def __init__(self, outcomes, connector_outcome, input_keys=(), output_keys=()):
+        StateMachine.__init__(self, outcomes, input_keys, output_keys)
+        self._connector_outcome = connector_outcome
+        self._last_label = None
+
+    @staticmethod
+    def add(label, state, transitions=None, remapping=None):
+        seq = Sequence._opened(label, state)
+        StateMachine.add(label, state, transitions, remapping)
+        if seq._last_label is not None:
+            seq._transitions[seq._last_label][seq._connector_outcome] = label
+        seq._last_label = label
+        return state

@@ -3,20 +3,25 @@
 This directory is on PYTHONPATH only inside tools/original_env/shell.sh, and
 only when ``import smach`` failed there before (a real smach always wins).
 Everything comes from ``exp_assignment2.minismach``: State, StateMachine
-(``with sm:`` + ``StateMachine.add``), CBState, cb_interface, UserData,
-Remapper and the SMACH exceptions.
+(``with sm:`` + ``StateMachine.add``), Sequence, Concurrence, CBState,
+cb_interface, UserData, Remapper and the SMACH exceptions.
 """
+import importlib
+
 try:
-    from exp_assignment2 import minismach as _impl
+    _impl = importlib.import_module('exp_assignment2.minismach')
 except ImportError:
     # ``exp_assignment2`` may be the user's own package of the same name (the
-    # original assignment's): load the module from this repository instead.
+    # original assignment's): load the package from this repository instead.
     import importlib.util as _util
     import os as _os
-    _path = _os.path.join(_os.path.dirname(_os.path.abspath(__file__)), *(
-        [_os.pardir] * 5 + ['src', 'exp_assignment2', 'minismach.py']))
-    _spec = _util.spec_from_file_location('exp_assignment2_minismach', _path)
+    import sys as _sys
+    _dir = _os.path.join(_os.path.dirname(_os.path.abspath(__file__)), *(
+        [_os.pardir] * 5 + ['src', 'exp_assignment2', 'minismach']))
+    _spec = _util.spec_from_file_location('exp2_minismach', _os.path.join(_dir, '__init__.py'),
+                                          submodule_search_locations=[_dir])
     _impl = _util.module_from_spec(_spec)
+    _sys.modules[_spec.name] = _impl
     _spec.loader.exec_module(_impl)
 
 __all__ = list(_impl.__all__)

@@ -1,36 +1,27 @@
-"""``smach_ros`` for the original-code environment: only what the original uses.
+"""``smach_ros`` for the original-code environment: exp_assignment2's states.
 
 This directory is on PYTHONPATH only inside tools/original_env/shell.sh, and
 only when ``import smach_ros`` failed there before (a real smach_ros always
-wins). The original assignment creates an introspection server for
-smach_viewer and never relies on it, so :class:`IntrospectionServer` is kept
-with its real signature and does nothing (smach_viewer shows nothing).
+wins). SimpleActionState, ServiceState, MonitorState and IntrospectionServer
+come from ``exp_assignment2.minismach.ros_states`` (see it for what each does;
+the introspection server publishes nothing: smach_viewer is not in Debian).
+Beside a real smach, whose states they are not, only IntrospectionServer.
 """
-import smach  # noqa: F401  (as the real smach_ros, it needs smach)
+import importlib
 
-__all__ = ['IntrospectionServer']
+import smach
 
+_shim = getattr(smach, '_impl', None)       # exp_assignment2's smach (tools/original_env)
+_impl = importlib.import_module(
+    (_shim.__name__ if _shim else 'exp_assignment2.minismach') + '.ros_states')
 
-class IntrospectionServer(object):
-    """``IntrospectionServer(server_name, state, path)``; start/stop/clear do nothing."""
-
-    def __init__(self, server_name, state, path):
-        self._server_name = server_name
-        self._state = state
-        self._path = path
-
-    def start(self):
-        pass
-
-    def stop(self):
-        pass
-
-    def clear(self):
-        pass
+__all__ = (['SimpleActionState', 'ServiceState', 'MonitorState', 'IntrospectionServer']
+           if _shim else ['IntrospectionServer'])
+globals().update((name, getattr(_impl, name)) for name in __all__)
 
 
 def __getattr__(name):
     raise AttributeError(
-        "smach_ros.%s is not provided by the original-code environment's "
-        "smach_ros replacement (tools/original_env, Debian has no smach_ros): "
-        "it only has a no-op IntrospectionServer" % name)
+        "smach_ros.%s is not provided by exp_assignment2's smach_ros replacement "
+        "(tools/original_env, Debian has no smach_ros); available: %s"
+        % (name, ', '.join(__all__)))

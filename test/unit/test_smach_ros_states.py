@@ -1,0 +1,134 @@
+"""tools/original_env's smach_ros: SimpleActionState, ServiceState and
+MonitorState against a real action server, service and topic, in SMACH
+containers, as a student's state machine uses them (a ROS master of its own,
+code run in the original-code environment)."""
+import os
+import socket
+import subprocess
+import time
+
+import pytest
+
+from original_env_helpers import PYTHON, base_env, original_env, run
+
+pytestmark = pytest.mark.skipif(not os.path.exists(PYTHON), reason='needs Debian python3')
+
+# An action server (x > 0 succeeds, x < 0 aborts, x == 0 runs until cancelled),
+# a SetBool service and an Int32 counter at 100 Hz; then the machines.
+STUDENT = '''
+import threading
+import actionlib, rospy, smach, smach_ros
+from exp_assignment2.msg import PlanningAction, PlanningResult
+from std_msgs.msg import Int32
+from std_srvs.srv import SetBool, SetBoolResponse
+
+rospy.init_node('student', disable_signals=True)
+
+def serve(goal):
+    x = goal.target_pose.pose.position.x
+    while x == 0 and not server.is_preempt_requested():
+        rospy.sleep(0.01)
+    if x > 0:
+        server.set_succeeded(PlanningResult())
+    elif x < 0:
+        server.set_aborted(PlanningResult())
+    else:
+        server.set_preempted()
+server = actionlib.SimpleActionServer('/robot/reaching_goal', PlanningAction, serve, False)
+server.start()
+rospy.Service('/switch', SetBool, lambda req: SetBoolResponse(True, 'got %s' % req.data))
+counter = rospy.Publisher('/count', Int32, queue_size=10)
+def count():
+    n = 0
+    while not rospy.is_shutdown():
+        counter.publish(Int32(n))
+        n += 1
+        rospy.sleep(0.01)
+threading.Thread(target=count, daemon=True).start()
+
+@smach.cb_interface(input_keys=['x'])
+def goal_cb(ud, goal):
+    goal.target_pose.pose.position.x = ud.x
+    return goal
+
+def goal_state():
+    return smach_ros.SimpleActionState('/robot/reaching_goal', PlanningAction, goal_cb=goal_cb,
+                                       result_key='result')
+
+@smach.cb_interface(output_keys=['said'], outcomes=['refused'])
+def response_cb(ud, response):
+    ud.said = response.message
+    return None if response.success else 'refused'
+
+sm = smach.StateMachine(outcomes=['done', 'failed'])
+sm.userdata.x, sm.userdata.on, sm.userdata.wait = 1.0, True, 0.0
+with sm:
+    smach.StateMachine.add('GO', goal_state(), transitions={'succeeded': 'CALL',
+                           'aborted': 'failed', 'preempted': 'failed'})
+    smach.StateMachine.add('CALL', smach_ros.ServiceState('/switch', SetBool, request_slots=['data'],
+                                                          response_cb=response_cb),
+                           transitions={'succeeded': 'WATCH', 'aborted': 'failed',
+                                        'preempted': 'failed', 'refused': 'failed'},
+                           remapping={'data': 'on'})
+    smach.StateMachine.add('WATCH', smach_ros.MonitorState('/count', Int32,
+                                                           lambda ud, msg: msg.data < 30),
+                           transitions={'invalid': 'BOTH', 'valid': 'failed',
+                                        'preempted': 'failed'})
+    both = smach.Concurrence(outcomes=['done', 'failed'], default_outcome='failed',
+                             input_keys=['wait'],
+                             child_termination_cb=lambda outcomes: outcomes['THREE'] == 'valid',
+                             outcome_map={'done': {'THREE': 'valid', 'WAIT': 'preempted'}})
+    smach.StateMachine.add('BOTH', both, transitions={'done': 'done', 'failed': 'failed'})
+    with both:
+        smach.Concurrence.add('WAIT', goal_state(), remapping={'x': 'wait'})
+        smach.Concurrence.add('THREE', smach_ros.MonitorState('/count', Int32,
+                                                              lambda ud, msg: True, max_checks=3))
+trail = []
+sm.register_transition_cb(lambda ud, active: trail.append(active[0]))
+print('OUTCOME', sm.execute(), ' '.join(trail), sm.userdata.said,
+      type(sm.userdata.result).__name__)
+
+aborting = smach.StateMachine(outcomes=['aborted', 'other'])
+aborting.userdata.x = -1.0
+with aborting:
+    smach.StateMachine.add('GO', goal_state(), transitions={'succeeded': 'other',
+                           'preempted': 'other'})
+print('ABORTED', aborting.execute())
+try:
+    smach_ros.ActionServerWrapper
+except AttributeError as exc:
+    print('MISSING', str(exc).split(' is not')[0])
+rospy.signal_shutdown('done')
+'''
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(('localhost', 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture
+def master(tmp_path):
+    port = free_port()
+    env = dict(base_env(), ROS_MASTER_URI='http://localhost:%d' % port, ROS_HOME=str(tmp_path))
+    proc = subprocess.Popen(['rosmaster', '--core', '-p', str(port)], env=env,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 30
+    while subprocess.run(['rosparam', 'list'], env=env, stdout=subprocess.DEVNULL,
+                         stderr=subprocess.DEVNULL).returncode != 0:
+        assert time.monotonic() < deadline, 'no master'
+        time.sleep(0.2)
+    yield env
+    proc.terminate()
+    proc.wait(10)
+
+
+def test_a_students_machine_of_action_service_and_monitor_states_runs(master):
+    proc = run(STUDENT, original_env(master), timeout=90)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    lines = [line for line in proc.stdout.splitlines() if not line.startswith('[')]  # rospy's
+    assert lines[0].split() == ['OUTCOME', 'done', 'CALL', 'WATCH', 'BOTH', 'got', 'True',
+                                'PlanningResult'], proc.stdout + proc.stderr
+    assert lines[1] == 'ABORTED aborted'
+    assert lines[2] == 'MISSING smach_ros.ActionServerWrapper'
