@@ -3,13 +3,10 @@ MonitorState against a real action server, service and topic, in SMACH
 containers, as a student's state machine uses them (a ROS master of its own,
 code run in the original-code environment)."""
 import os
-import socket
-import subprocess
-import time
 
 import pytest
 
-from original_env_helpers import PYTHON, base_env, original_env, run
+from original_env_helpers import PYTHON, original_env, run
 
 pytestmark = pytest.mark.skipif(not os.path.exists(PYTHON), reason='needs Debian python3')
 
@@ -102,30 +99,8 @@ rospy.signal_shutdown('done')
 '''
 
 
-def free_port():
-    with socket.socket() as s:
-        s.bind(('localhost', 0))
-        return s.getsockname()[1]
-
-
-@pytest.fixture
-def master(tmp_path):
-    port = free_port()
-    env = dict(base_env(), ROS_MASTER_URI='http://localhost:%d' % port, ROS_HOME=str(tmp_path))
-    proc = subprocess.Popen(['rosmaster', '--core', '-p', str(port)], env=env,
-                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    deadline = time.monotonic() + 30
-    while subprocess.run(['rosparam', 'list'], env=env, stdout=subprocess.DEVNULL,
-                         stderr=subprocess.DEVNULL).returncode != 0:
-        assert time.monotonic() < deadline, 'no master'
-        time.sleep(0.2)
-    yield env
-    proc.terminate()
-    proc.wait(10)
-
-
-def test_a_students_machine_of_action_service_and_monitor_states_runs(master):
-    proc = run(STUDENT, original_env(master), timeout=90)
+def test_a_students_machine_of_action_service_and_monitor_states_runs(ros_master):
+    proc = run(STUDENT, original_env(ros_master), timeout=90)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     lines = [line for line in proc.stdout.splitlines() if not line.startswith('[')]  # rospy's
     assert lines[0].split() == ['OUTCOME', 'done', 'CALL', 'WATCH', 'BOTH', 'got', 'True',

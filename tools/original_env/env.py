@@ -10,8 +10,8 @@ the environment it will inherit (workspace sourced). It prints shell
   with the shims decided so far (smach_ros needs a smach), so a real module
   is never shadowed; the shims also come last.
 * ROS_PACKAGE_PATH: $EXP2_LAUNCH_PACKAGES (shell.sh's executable copy of
-  packages/: gazebo_ros, xacro, controller_manager for the user's launch
-  files; packages/README.md) first; EXP2_REPO: this repository.
+  packages/: gazebo_ros, xacro, controller_manager, image_transport for the
+  user's launch files; packages/README.md) first; EXP2_REPO: this repository.
 * PATH: $EXP2_ORIGINAL_BIN (where shell.sh puts ``python`` and ``python3``,
   python_launcher.sh: /usr/bin/python3, with Python 2's tab rule for a script, also
   for ``#!/usr/bin/env python`` scripts such as the original's) and /usr/bin
@@ -69,8 +69,9 @@ def compute(environ):
     else:
         notes.append('cv2 GUI: no DISPLAY, so cv2.imshow aborts the process as OpenCV does'
                      ' (use xvfb-run or QT_QPA_PLATFORM=offscreen)')
-    # gazebo_ros, xacro, controller_manager for the user's launch files (packages/README.md)
-    notes.append('gazebo_ros, xacro, controller_manager: stand-ins')
+    # gazebo_ros, xacro, controller_manager, image_transport for the user's launch
+    # files (packages/README.md)
+    notes.append('gazebo_ros, xacro, controller_manager, image_transport: stand-ins')
     return {
         'ROS_PACKAGE_PATH': _join(environ.get('EXP2_LAUNCH_PACKAGES') or
                                   os.path.join(HERE, 'packages'),

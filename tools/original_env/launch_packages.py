@@ -1,5 +1,6 @@
 """Put the launch-surface packages (packages/: gazebo_ros, xacro,
-controller_manager) where roslaunch can run them, and print that directory.
+controller_manager, image_transport) where roslaunch can run them, and print
+that directory.
 
     /usr/bin/python3 launch_packages.py WORKSPACE   -> WORKSPACE/original_env_packages/<hash>
 
@@ -22,7 +23,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PACKAGES = os.path.join(HERE, 'packages')
 EXECUTABLES = ('gazebo_ros/scripts/gzserver', 'gazebo_ros/scripts/debug',
                'gazebo_ros/scripts/gzclient', 'gazebo_ros/scripts/spawn_model',
-               'controller_manager/scripts/spawner', 'xacro/xacro')
+               'controller_manager/scripts/spawner', 'xacro/xacro',
+               'image_transport/scripts/republish')
 ALIASES = {'xacro/xacro.py': 'xacro/xacro'}
 
 
