@@ -106,6 +106,30 @@ class TestGazeboState(unittest.TestCase):
             self.assertTrue(eventually(lambda: self.rosout.lines(words, Log.ERROR)), words)
             self.assertEqual(len(self.rosout.lines(words, Log.ERROR)), 1, words)
 
+    def test_4b_no_body_can_be_put_off_the_world(self):
+        before = self.srv['get_model_state']('robot', '').pose.position
+        for x in (100.0, 1.0e300):                  # beyond the walls; where physics breaks
+            state = ModelState(model_name='robot')
+            state.pose.position.x, state.pose.position.z = x, 0.1
+            answer = self.srv['set_model_state'](state)
+            self.assertFalse(answer.success, x)
+            self.assertIn('is outside the world (x in [-9.8, 9.8], y in [-9.8, 9.8]',
+                          answer.status_message)
+        link = LinkState(link_name='ball::ball_link')
+        link.pose.position.y = -1.0e6
+        answer = self.srv['set_link_state'](link)
+        self.assertFalse(answer.success)
+        self.assertIn('outside the world', answer.status_message)
+        state = ModelState(model_name='ball')
+        state.pose.position.z = 0.5
+        state.twist.linear.x = 1.0e4
+        answer = self.srv['set_model_state'](state)
+        self.assertFalse(answer.success)
+        self.assertIn('faster than 1000 m/s or rad/s', answer.status_message)
+        after = self.srv['get_model_state']('robot', '').pose.position
+        self.assertLess(math.hypot(after.x - before.x, after.y - before.y), 0.5)
+        self.assertGreater(after.z, 0.0)
+
     def test_5_reset_simulation_sets_time_and_world_back(self):
         clock().sleep(1.0)
         self.assertGreater(rospy.get_time(), 2.0)

@@ -192,12 +192,25 @@ def test_the_guard_puts_a_non_finite_body_back_and_reset_restores_every_body(dog
     robot = dog.engine.models['robot']
     p.resetBasePositionAndOrientation(robot.id, [float('nan')] * 3, [0, 0, 0, 1],
                                       physicsClientId=robot.client)
-    assert not robot.finite()
+    region = dog.engine._guard_region
+    assert robot.trouble(region) == 'had a non-finite pose'
     dog.engine.step()                   # the guard
-    assert robot.finite()
+    assert robot.trouble(region) is None
     assert dog.pose('robot')[:2] == (pytest.approx(-5.0, abs=1e-2), pytest.approx(7.0, abs=1e-2))
     dog.engine.reset_world()
     assert dog.pose('ball')[:3] == (-7.0, 6.0, 0.5)
+
+
+def test_a_body_that_left_the_world_is_put_back_and_drives_again(dog):
+    robot = dog.engine.models['robot']
+    for outside in ((40.0, 0.0, 0.1), (0.0, 0.0, -12.0)):       # beyond the walls, under the floor
+        robot.set_pose(outside, (0.0, 0.0, 0.0, 1.0))
+        dog.engine.step()
+        assert dog.pose('robot')[:2] == (pytest.approx(-5.0, abs=1e-2),
+                                         pytest.approx(7.0, abs=1e-2))
+    dog.run(2.0, 'robot', (0.5, 0.0, 0.0))                      # on the floor, and it drives
+    x, y, z, _ = dog.pose('robot')
+    assert 0.05 < z < 0.2 and math.hypot(x + 5.0, y - 7.0) > 0.5
 
 
 def test_reset_simulation_sets_the_time_back_and_the_plugins_count_from_there(dog):

@@ -24,8 +24,8 @@ from std_msgs.msg import Header
 
 from exp_assignment2.sim.plugins.cores import Every
 from exp_assignment2.sim.plugins.ros_io import Watched, stamp
-from exp_assignment2.sim.poses import (PoseError, entity_pose, from_matrix, matrix, pose_tuple,
-                                       relative, split_entity, twist_tuple)
+from exp_assignment2.sim.poses import (PoseError, check_in_world, entity_pose, from_matrix,
+                                       matrix, pose_tuple, relative, split_entity, twist_tuple)
 
 
 def pose_msg(pose):
@@ -146,6 +146,7 @@ class GazeboState(object):
         pose, twist = pose_tuple(state.pose), twist_tuple(state.twist)
         position, quat = from_matrix(matrix(entity_pose(self.engine, reference)).dot(
             matrix(pose)))
+        check_in_world(self.engine.bounds, position)
         moving = any(v for part in twist for v in part)
         model.set_pose(position, quat, twist=twist if moving else None)
 

@@ -22,9 +22,15 @@ from exp_assignment2.sim import urdf as urdf_reader
 from exp_assignment2.sim.model import Model
 from exp_assignment2.sim.pacing import MAX_REAL_TIME_FACTOR, Pacer
 from exp_assignment2.sim.physics import Physics
+from exp_assignment2.sim.poses import MAX_COORDINATE, world_region
 from exp_assignment2.sim.plugins.base import EngineHandle, Plugin, PluginError
 
 INFINITE_BOUNDS = (-math.inf, math.inf, -math.inf, math.inf)
+# The guard's world: a body farther than this beyond the bounds, or below
+# -FALL_DEPTH in a world with bounds (the package's, which have a floor), has
+# left it. A world without bounds (an SDF world) lets bodies fall, as Gazebo.
+GUARD_MARGIN = 10.0
+FALL_DEPTH = 10.0
 
 
 class SpawnError(ValueError):
@@ -68,6 +74,9 @@ class Engine(object):
         self.pacer = Pacer(real_time_factor, max_real_time_factor=max_real_time_factor)
         self.registry = dict(registry or {})
         self.bounds = tuple(bounds) if bounds is not None else INFINITE_BOUNDS
+        self._guard_region = world_region(
+            self.bounds, GUARD_MARGIN,
+            -FALL_DEPTH if all(map(math.isfinite, self.bounds)) else -MAX_COORDINATE)
         self.settings = dict(settings or {})
         self.log = log or _Log()
         self.models = collections.OrderedDict()
@@ -213,11 +222,14 @@ class Engine(object):
             listener(self)
 
     def _guard(self):
-        """A dynamic body whose state went non-finite is put back where it spawned."""
+        """A dynamic body whose state went non-finite, or that left the world
+        (see GUARD_MARGIN), is put back where it spawned."""
         for model in self.models.values():
-            if not (model.static or model.kinematic) and not model.finite():
-                self.log.error('simulator: %s had a non-finite pose; put back at its spawn '
-                               'pose' % model.name)
+            trouble = (None if model.static or model.kinematic
+                       else model.trouble(self._guard_region))
+            if trouble:
+                self.log.error('simulator: %s %s; put back at its spawn pose'
+                               % (model.name, trouble))
                 model.reset()
                 for plugin in self.plugins[model.name]:
                     plugin.reset()

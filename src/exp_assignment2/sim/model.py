@@ -16,6 +16,7 @@ import numpy as np
 from exp_assignment2.sim.bullet import p
 
 from exp_assignment2.geometry import all_finite
+from exp_assignment2.sim.poses import in_region
 
 HIDDEN_Z = -50.0   # where a hidden body is put, far below every camera's view
 
@@ -137,11 +138,16 @@ class Model(object):
         return (names, [s[0] for s in states], [s[1] for s in states],
                 [s[3] for s in states])
 
-    def finite(self):
-        """True while the pose and velocity are finite numbers."""
+    def trouble(self, region):
+        """None while the pose and velocity are finite and the body is within
+        ``region`` (:func:`~.poses.world_region`), else what went wrong."""
         pos, quat = p.getBasePositionAndOrientation(self.id, physicsClientId=self.client)
         lin, ang = p.getBaseVelocity(self.id, physicsClientId=self.client)
-        return all_finite(*pos, *quat, *lin, *ang)
+        if not all_finite(*pos, *quat, *lin, *ang):
+            return 'had a non-finite pose'
+        if not in_region(region, pos):
+            return 'left the world at (%.1f, %.1f, %.1f)' % tuple(pos)
+        return None
 
     # what plugins do to it
     def set_joint_velocity(self, name, velocity, max_force):

@@ -13,6 +13,14 @@ from exp_assignment2.sim.urdf import quaternion_matrices
 WORLD_FRAMES = ('', 'world', 'map', '/world', '/map')
 IDENTITY = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
 
+# Where a service may put a body: within the world's bounds and this margin
+# (m); in a world without bounds (an SDF world), within MAX_COORDINATE of the
+# origin. Beyond about 3.4e38 m pybullet's broadphase breaks for good: a body
+# put there and back no longer touches the floor.
+WORLD_MARGIN = 1.0
+MAX_COORDINATE = 1.0e5
+MAX_SPEED = 1.0e3       # m/s and rad/s: no body in these worlds moves faster
+
 
 class PoseError(ValueError):
     """A pose or entity that cannot be used, with the reason."""
@@ -36,12 +44,39 @@ def pose_tuple(msg):
 
 
 def twist_tuple(msg):
-    """((vx, vy, vz), (wx, wy, wz)) of a geometry_msgs/Twist; PoseError if not finite."""
+    """((vx, vy, vz), (wx, wy, wz)) of a geometry_msgs/Twist; PoseError if not
+    finite or faster than MAX_SPEED."""
     lin, ang = msg.linear, msg.angular
     values = ((lin.x, lin.y, lin.z), (ang.x, ang.y, ang.z))
     if not all(math.isfinite(v) for part in values for v in part):
         raise PoseError('the twist %s %s is not finite' % (_fmt(values[0]), _fmt(values[1])))
+    if any(abs(v) > MAX_SPEED for part in values for v in part):
+        raise PoseError('the twist %s %s is faster than %g m/s or rad/s'
+                        % (_fmt(values[0]), _fmt(values[1]), MAX_SPEED))
     return values
+
+
+def world_region(bounds, margin, z_min=-MAX_COORDINATE):
+    """(x_min, x_max, y_min, y_max, z_min, z_max): the world's bounds widened
+    by ``margin``, +-MAX_COORDINATE where a bound is infinite."""
+    widened = [b - margin if i % 2 == 0 else b + margin for i, b in enumerate(bounds)]
+    return tuple(max(-MAX_COORDINATE, min(MAX_COORDINATE, v)) for v in widened) + (
+        z_min, MAX_COORDINATE)
+
+
+def in_region(region, position):
+    x_min, x_max, y_min, y_max, z_min, z_max = region
+    x, y, z = position
+    return x_min <= x <= x_max and y_min <= y <= y_max and z_min <= z <= z_max
+
+
+def check_in_world(bounds, position):
+    """PoseError unless a service may put a body at ``position`` (see WORLD_MARGIN)."""
+    region = world_region(bounds, WORLD_MARGIN)
+    if not in_region(region, position):
+        raise PoseError('the position %s is outside the world (x in [%g, %g], y in [%g, %g], '
+                        'z in [%g, %g])' % ((_fmt(position),) + region))
+    return position
 
 
 def matrix(pose):
@@ -99,9 +134,10 @@ def entity_pose(engine, name):
 
 
 def pose_in_world(engine, pose, reference):
-    """``pose`` given in ``reference``'s frame, as (x, y, z, roll, pitch, yaw) in the world."""
+    """``pose`` given in ``reference``'s frame, as (x, y, z, roll, pitch, yaw) in
+    the world; PoseError outside it (:func:`check_in_world`)."""
     world = from_matrix(matrix(entity_pose(engine, reference)).dot(matrix(pose)))
-    return tuple(world[0]) + rpy(world[1])
+    return tuple(check_in_world(engine.bounds, world[0])) + rpy(world[1])
 
 
 def relative(engine, pose, reference):
