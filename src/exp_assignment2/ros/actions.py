@@ -5,14 +5,28 @@ another is still finishing makes it log "Got a transition callback on a goal
 handle that we're not tracking", and a hurried cancel "received DONE twice".
 Each :class:`ActionGoal` here keeps its own handle of a plain ActionClient, so
 every goal's transitions go to the object that waits for it.
+
+A goal sent while its server is being restarted (respawned after a crash)
+reaches nobody, and actionlib waits for its acknowledgement for ever. The
+client reads the server's status messages: a goal that UNSEEN of them in a
+row leave out, for at least RESEND_AFTER s of wall time, is sent again, with
+one line. The status is published in ROS time, so a paused simulation sends
+nothing again.
 """
+import threading
+import time
+
 import actionlib
 import rospy
-from actionlib_msgs.msg import GoalStatus
+from actionlib_msgs.msg import GoalStatus, GoalStatusArray
 
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 from exp_assignment2.ros.clock import RosClock
+
+
+UNSEEN = 3             # status messages without the goal ...
+RESEND_AFTER = 1.0     # ... and wall s since it was sent: it is sent again
 
 
 class ActionGoal(object):
@@ -21,13 +35,36 @@ class ActionGoal(object):
 
     def __init__(self, client, goal, clock):
         self.clock, self.status, self.text = clock, None, ''
-        self.handle = client.send_goal(goal, transition_cb=self._on_transition)
+        self.goal, self.sends, self.lock = goal, 0, threading.Lock()
+        self.send(client)
 
-    def _on_transition(self, handle):
+    def send(self, client):
+        """Send the goal (again: the handle before is dropped, and cancelled
+        in case it reached a server after all)."""
+        with self.lock:
+            old = getattr(self, 'handle', None)
+            self.sends += 1
+            self.sent_at, self.unseen = time.monotonic(), 0
+            send = self.sends
+            self.handle = client.send_goal(
+                self.goal, transition_cb=lambda handle: self._on_transition(handle, send))
+        if old is not None:
+            old.cancel()
+
+    def _on_transition(self, handle, send):
+        if send != self.sends:             # a handle sent again since
+            return
         if handle.get_comm_state() == actionlib.CommState.DONE and self.status is None:
             self.status = handle.get_goal_status()
             self.text = handle.get_goal_status_text()
             self.clock.notify()
+
+    def unacknowledged(self):
+        return (self.status is None and self.handle.get_comm_state()
+                == actionlib.CommState.WAITING_FOR_GOAL_ACK)
+
+    def goal_id(self):
+        return self.handle.comm_state_machine.action_goal.goal_id.id
 
     def done(self):
         return self.status is not None
@@ -36,8 +73,9 @@ class ActionGoal(object):
         return self.status == GoalStatus.SUCCEEDED
 
     def cancel(self):
-        if self.status is None:
-            self.handle.cancel()
+        with self.lock:
+            if self.status is None:
+                self.handle.cancel()
 
 
 class PlanningClient(object):
@@ -46,6 +84,23 @@ class PlanningClient(object):
     def __init__(self, name, clock):
         self.name, self.clock = name, clock
         self.client = actionlib.ActionClient(name, PlanningAction)
+        self.lock, self.waiting = threading.Lock(), []     # goals not acknowledged yet
+        rospy.Subscriber(name + '/status', GoalStatusArray, self._on_status, queue_size=1)
+
+    def _on_status(self, msg):
+        known = set(s.goal_id.id for s in msg.status_list)
+        with self.lock:
+            self.waiting = [g for g in self.waiting if g.unacknowledged()]
+            for goal in self.waiting:
+                if goal.goal_id() in known:
+                    continue
+                goal.unseen += 1
+                waited = time.monotonic() - goal.sent_at
+                if goal.unseen >= UNSEEN and waited >= RESEND_AFTER:
+                    rospy.logwarn('%s: the goal (%s) was not acknowledged by %s in %.1f s (a '
+                                  'restarted server never got it): sent again',
+                                  rospy.get_name(), goal_text(goal.goal), self.name, waited)
+                    goal.send(self.client)
 
     def wait_for_server(self, warn_every=30.0):
         """Wait until the server is up, however long it takes (the node has
@@ -75,7 +130,16 @@ class PlanningClient(object):
 
     def go_to(self, x, y, z=0.0):
         """Send a goal; returns its :class:`ActionGoal`."""
-        return ActionGoal(self.client, make_goal(x, y, z, stamp=rospy.Time.now()), self.clock)
+        with self.lock:
+            goal = ActionGoal(self.client, make_goal(x, y, z, stamp=rospy.Time.now()),
+                              self.clock)
+            self.waiting.append(goal)
+        return goal
+
+
+def goal_text(goal):
+    p = goal.target_pose.pose.position
+    return 'x, y, z = %.2f, %.2f, %.2f' % (p.x, p.y, p.z)
 
 
 def start_client(node, action):
