@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Scenario B as a hostile user would treat it: floods of bad words, orders
 and gestures give a few short lines; a huge /cmd_vel cannot put MiRo off its
-grid or make its pose non-finite, and MiRo still arrives where it is sent."""
+grid or make its pose non-finite, and MiRo still arrives where it is sent;
+a motion controller that dies in the middle of a move comes back and drives
+on to the same target, counting arrivals on."""
 import math
 import time
 import unittest
@@ -9,9 +11,11 @@ import unittest
 import rospy
 import rostest
 from geometry_msgs.msg import Twist
-from std_msgs.msg import Float64MultiArray, String
+from std_msgs.msg import Float64MultiArray, Int64MultiArray, String
+from std_srvs.srv import Empty
 
-from checks import Pose, Rosout, Watch, clock, wait_for_subscribers, wait_until
+from checks import (Pose, Rosout, Watch, clock, eventually, kill_node, node_pid,
+                    wait_for_subscribers, wait_until)
 from exp_assignment2.msg import Gesture
 
 BURST = 1000
@@ -60,6 +64,51 @@ class TestMiroRobustness(unittest.TestCase):
                         'MiRo arrives somewhere again')
         a = self.arrivals.msg.data
         self.assertLessEqual(math.hypot(a[2] - a[0], a[3] - a[1]), 0.05)
+
+    def test_3_a_controller_killed_mid_move_drives_on(self):
+        targets = Watch('/target_pos', Int64MultiArray)
+        pause = rospy.ServiceProxy('/gazebo/pause_physics', Empty)
+        unpause = rospy.ServiceProxy('/gazebo/unpause_physics', Empty)
+
+        def arrived_at(target, since):
+            return [a for a in self.arrivals.all[since:] if tuple(a.data[:2]) == target]
+        for _ in range(5):          # a target MiRo has not reached yet, the world paused
+            count, since = targets.count, self.arrivals.count
+            self.assertTrue(wait_until(lambda: targets.count > count, 60.0), 'no new target')
+            target = tuple(targets.msg.data)
+            pause()        # the respawn takes wall time: no order times out meanwhile
+            if not arrived_at(target, since):
+                break
+            unpause()
+        numbers = [a.data[4] for a in self.arrivals.all]
+        late = len(self.rosout.lines('no arrival within'))
+        try:
+            old = kill_node('/robot_motion_controller')
+            deadline = time.monotonic() + 30.0
+            while node_pid('/robot_motion_controller') in (None, old):
+                self.assertLess(time.monotonic(), deadline, 'the controller did not come back')
+                time.sleep(0.1)
+            time.sleep(2.0)      # its subscriptions connect (wall time: the world is paused)
+        finally:
+            unpause()
+        self.assertTrue(wait_until(lambda: arrived_at(target, len(numbers)), 60.0),
+                        'no arrival at %s after the controller came back' % (target,))
+        arrival = arrived_at(target, len(numbers))[0]
+        self.assertEqual(arrival.data[4], (numbers[-1] if numbers else 0) + 1)
+        # on its own: not an order sent again after the state manager gave up waiting
+        self.assertEqual(self.rosout.lines('no arrival within')[late:], [])
+    def test_4_a_refused_target_is_not_announced(self):
+        pub = rospy.Publisher('/target_pos', Int64MultiArray, queue_size=10)
+        wait_for_subscribers(pub, count=3)     # the controller, print_info, the state manager
+        for data in ([1, 2, 3], [100, -100], []):
+            pub.publish(Int64MultiArray(data=data))
+        self.assertTrue(eventually(lambda: self.rosout.lines(
+            'is not a grid point', node='/robot_motion_controller'), 10.0, 10.0),
+            'the controller refused nothing')
+        clock().sleep(1.0)
+        said = [m.msg for m in self.rosout.lines('target: (', node='/print_info')]
+        for shown in ('target: (1, 2)', 'target: (100, -100)', 'target: ()'):
+            self.assertNotIn(shown, said)
 
 
 if __name__ == '__main__':

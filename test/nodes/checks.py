@@ -173,10 +173,11 @@ class Pose(Watch):
         return p.x, p.y, p.z, yaw_of((q.x, q.y, q.z, q.w))
 
 
-def wait_for_subscribers(pub, ros_seconds=30.0):
-    """True once ``pub`` has a subscriber (bounded)."""
-    ok = wait_until(lambda: pub.get_num_connections() > 0, ros_seconds)
-    assert ok, 'nobody subscribes to %s' % pub.resolved_name
+def wait_for_subscribers(pub, ros_seconds=30.0, count=1):
+    """True once ``pub`` has ``count`` subscribers (bounded)."""
+    ok = wait_until(lambda: pub.get_num_connections() >= count, ros_seconds)
+    assert ok, '%d of %d subscribers of %s' % (pub.get_num_connections(), count,
+                                               pub.resolved_name)
     return ok
 
 

@@ -1,12 +1,14 @@
 """``print_info``: logs MiRo's state changes, commands, targets and arrivals.
 
-Only commands the grounding node accepts are echoed (it logs the refusals,
-throttled), so a flood of bad input does not flood this log either; what is
-echoed is quoted to 80 characters.
+Only commands the grounding node accepts, and targets the motion controller
+accepts, are echoed (they log the refusals, throttled), so a flood of bad
+input does not flood this log either; what is echoed is quoted to 80
+characters.
 """
 import rospy
 from std_msgs.msg import Float64MultiArray, Int64MultiArray, String
 
+from exp_assignment2 import grid
 from exp_assignment2.behaviour.miro import STATE_PARAM
 from exp_assignment2.grammar import CommandError, parse_motion_command, quote
 from exp_assignment2.ros.clock import RosClock
@@ -18,6 +20,11 @@ def on_command(msg):
     except CommandError:
         return
     rospy.loginfo('command: %s', quote(msg.data.strip()))
+
+
+def on_target(msg):
+    if len(msg.data) == 2 and grid.on_grid(msg.data[0], msg.data[1]):
+        rospy.loginfo('target: (%d, %d)', msg.data[0], msg.data[1])
 
 
 def on_state(msg):
@@ -44,7 +51,6 @@ def main():
         return callback
     rospy.Subscriber('/state', String, in_ros_time(on_state), queue_size=100)
     rospy.Subscriber('/command', String, in_ros_time(on_command), queue_size=100)
-    rospy.Subscriber('/target_pos', Int64MultiArray, in_ros_time(lambda m: rospy.loginfo(
-        'target: (%s)', ', '.join(str(v) for v in m.data[:2]))), queue_size=100)
+    rospy.Subscriber('/target_pos', Int64MultiArray, in_ros_time(on_target), queue_size=100)
     rospy.Subscriber('/arrival', Float64MultiArray, in_ros_time(on_arrival), queue_size=100)
     rospy.spin()

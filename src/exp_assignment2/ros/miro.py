@@ -118,6 +118,15 @@ def listen(ears, person, refuse):
     rospy.Subscriber('/gesture', Gesture, on_gesture, queue_size=100)
 
 
+def last_arrival_number():
+    """The number of the last arrival in ``/all`` (0: none yet)."""
+    report = rospy.get_param('/all', None)
+    try:
+        return int(report[4])
+    except (TypeError, IndexError, ValueError, OverflowError):
+        return 0
+
+
 class OmniMotionController(object):
     """Drives the omnidirectional MiRo to ``/target_pos`` at ``rate`` Hz of ROS
     time, whatever its heading (the planar drive reads x, y in MiRo's frame);
@@ -127,7 +136,8 @@ class OmniMotionController(object):
 
     def __init__(self, kp=1.0, max_speed=1.0, tolerance=0.05, rate=20.0):
         self.kp, self.max_speed, self.tolerance = kp, max_speed, tolerance
-        self.target, self.pose, self.number = None, None, 1    # pose: (position, yaw)
+        # pose: (position, yaw); arrivals are counted on from /all's (a respawn)
+        self.target, self.pose, self.number = None, None, last_arrival_number() + 1
         self.cmd_pub = rospy.Publisher('/cmd_vel', Twist, queue_size=1)
         self.arrival_pub = rospy.Publisher('/arrival', Float64MultiArray, queue_size=10)
         self.refuse = refusal_log('/target_pos')
