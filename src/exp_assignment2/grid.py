@@ -16,6 +16,12 @@ def on_grid(x, y):
         return False
 
 
+def target_point(data):
+    """A ``/target_pos``'s data as the grid point (x, y), or None when it is
+    not one (the motion controller drives only to those)."""
+    return (data[0], data[1]) if len(data) == 2 and on_grid(data[0], data[1]) else None
+
+
 def random_point(rng):
     """A random grid point for ``go_rand``, from ``rng`` (random.Random)."""
     return rng.randint(GRID_MIN, RANDOM_MAX), rng.randint(GRID_MIN, RANDOM_MAX)

@@ -173,12 +173,25 @@ class Pose(Watch):
         return p.x, p.y, p.z, yaw_of((q.x, q.y, q.z, q.w))
 
 
-def wait_for_subscribers(pub, ros_seconds=30.0, count=1):
-    """True once ``pub`` has ``count`` subscribers (bounded)."""
-    ok = wait_until(lambda: pub.get_num_connections() >= count, ros_seconds)
-    assert ok, '%d of %d subscribers of %s' % (pub.get_num_connections(), count,
-                                               pub.resolved_name)
+def wait_for_subscribers(pub, ros_seconds=30.0):
+    """True once ``pub`` has a subscriber (bounded)."""
+    ok = wait_until(lambda: pub.get_num_connections() > 0, ros_seconds)
+    assert ok, 'nobody subscribes to %s' % pub.resolved_name
     return ok
+
+
+def wait_for_every_subscriber(pub, wall_seconds=20.0):
+    """Wait (wall time: connections take wall time) until ``pub`` is connected
+    to every subscriber the master lists for its topic."""
+    master = rosgraph.Master(rospy.get_name())
+    deadline = time.monotonic() + wall_seconds
+    while time.monotonic() < deadline:
+        subscribers = dict(master.getSystemState()[1]).get(pub.resolved_name, [])
+        if subscribers and pub.get_num_connections() >= len(subscribers):
+            return
+        time.sleep(0.05)
+    raise AssertionError('%s: %d connections, subscribers %s' % (
+        pub.resolved_name, pub.get_num_connections(), subscribers))
 
 
 class DogObserver(object):

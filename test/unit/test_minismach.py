@@ -243,9 +243,6 @@ class Waits(smach.State):
                 return 'preempted'
         return 'done'
 
-    def request_preempt(self):
-        smach.State.request_preempt(self)
-
 
 class Writes(smach.State):
     def __init__(self, key, value, outcome='done'):
@@ -349,3 +346,20 @@ def test_a_concurrence_names_what_is_wrong():
         smach.Concurrence.add('BAD', smach.CBState(lambda ud: 1 / 0, outcomes=['x']))
     with pytest.raises(smach.InvalidUserCodeError, match="state 'BAD'.*division by zero"):
         cc.execute()
+
+    def leave(ud):
+        raise SystemExit(3)
+    cc = smach.Concurrence(outcomes=['a'], default_outcome='a')
+    with cc:
+        smach.Concurrence.add('EXIT', smach.CBState(leave, outcomes=['x']))
+        smach.Concurrence.add('WAIT', Waits())
+    with pytest.raises(smach.InvalidUserCodeError, match="state 'EXIT'"):
+        cc.execute()                                    # not a wait for ever
+
+
+def test_an_outcome_callback_that_says_nothing_leaves_the_mapped_outcome():
+    cc = smach.Concurrence(outcomes=['mapped', 'default'], default_outcome='default',
+                           outcome_map={'mapped': {'ONE': 'a'}}, outcome_cb=lambda o: None)
+    with cc:
+        smach.Concurrence.add('ONE', Returns('a'))
+    assert cc.execute() == 'mapped'

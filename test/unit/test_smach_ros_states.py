@@ -15,7 +15,7 @@ pytestmark = pytest.mark.skipif(not os.path.exists(PYTHON), reason='needs Debian
 STUDENT = '''
 import threading
 import actionlib, rospy, smach, smach_ros
-from exp_assignment2.msg import PlanningAction, PlanningResult
+from exp_assignment2.msg import PlanningAction, PlanningFeedback, PlanningResult
 from std_msgs.msg import Int32
 from std_srvs.srv import SetBool, SetBoolResponse
 
@@ -23,6 +23,7 @@ rospy.init_node('student', disable_signals=True)
 
 def serve(goal):
     x = goal.target_pose.pose.position.x
+    server.publish_feedback(PlanningFeedback(stat='started'))
     while x == 0 and not server.is_preempt_requested():
         rospy.sleep(0.01)
     if x > 0:
@@ -48,9 +49,11 @@ def goal_cb(ud, goal):
     goal.target_pose.pose.position.x = ud.x
     return goal
 
+heard = []
 def goal_state():
     return smach_ros.SimpleActionState('/robot/reaching_goal', PlanningAction, goal_cb=goal_cb,
-                                       result_key='result')
+                                       result_key='result',
+                                       feedback_cb=lambda ud, fb: heard.append(fb.stat))
 
 @smach.cb_interface(output_keys=['said'], outcomes=['refused'])
 def response_cb(ud, response):
@@ -83,7 +86,7 @@ with sm:
 trail = []
 sm.register_transition_cb(lambda ud, active: trail.append(active[0]))
 print('OUTCOME', sm.execute(), ' '.join(trail), sm.userdata.said,
-      type(sm.userdata.result).__name__)
+      type(sm.userdata.result).__name__, heard[0])
 
 aborting = smach.StateMachine(outcomes=['aborted', 'other'])
 aborting.userdata.x = -1.0
@@ -104,6 +107,6 @@ def test_a_students_machine_of_action_service_and_monitor_states_runs(ros_master
     assert proc.returncode == 0, proc.stdout + proc.stderr
     lines = [line for line in proc.stdout.splitlines() if not line.startswith('[')]  # rospy's
     assert lines[0].split() == ['OUTCOME', 'done', 'CALL', 'WATCH', 'BOTH', 'got', 'True',
-                                'PlanningResult'], proc.stdout + proc.stderr
+                                'PlanningResult', 'started'], proc.stdout + proc.stderr
     assert lines[1] == 'ABORTED aborted'
     assert lines[2] == 'MISSING smach_ros.ActionServerWrapper'

@@ -7,9 +7,9 @@ out:=/robot/image"``). The transports are the two Debian lacks the plugins
 for and this package's camera speaks: ``raw`` (sensor_msgs/Image on the base
 topic) and ``compressed`` (sensor_msgs/CompressedImage, JPEG, on
 ``BASE/compressed``). Without OUT_TRANSPORT it publishes in both, as
-image_transport publishes in every transport it has. Lazy, as
-image_transport: the input is subscribed to only while an output has a
-subscriber. Raw images go to JPEG from ``bgr8``, ``rgb8`` and ``mono8``
+image_transport publishes in every transport it has. Lazier than
+image_transport (whose republish always subscribes to its input): the input
+is subscribed to only while an output has a subscriber. Raw images go to JPEG from ``bgr8``, ``rgb8`` and ``mono8``
 (quality ``~jpeg_quality``, 80); other encodings are dropped with a
 throttled WARN naming them.
 """

@@ -66,9 +66,14 @@ def use_noetic_load_yaml(xacro):
         def __getitem__(self, index):
             return wrap(list.__getitem__(self, index))
 
+        def __iter__(self):
+            return (wrap(item) for item in list.__iter__(self))
+
     def radians(loader, node):
         value = loader.construct_scalar(node)
         try:
+            if '__' in value:          # as xacro's safe_eval: no way out of the math names
+                raise ValueError('"__" is not allowed')
             return float(eval(value, {'__builtins__': {}}, vars(math)))
         except Exception as exc:
             raise xacro.XacroException('invalid expression: %s (%s)' % (value, exc))

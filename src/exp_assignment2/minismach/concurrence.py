@@ -5,16 +5,18 @@ import traceback
 from .machine import Container
 from .states import InvalidStateError, InvalidTransitionError, InvalidUserCodeError, SmachError
 
+WAIT_STEP = 0.1     # s: the longest wait without a look at the preempt flag
+
 
 class Concurrence(Container):
     """Runs its states at once, each in a thread, and ends when all have
     ended, or when ``child_termination_cb(outcomes)`` returns True after one
-    ended (the others are then preempted and waited for). Its outcome is
-    ``outcome_cb(outcomes)``'s if given, else the last entry of
-    ``outcome_map`` ({container outcome: {label: child outcome}}) that every
-    child it names matches, else ``default_outcome``. A preempt reaches every
-    running child. ``outcomes`` given to the callbacks: {label: outcome, None
-    while running}.
+    ended (the others are then preempted and waited for). Its outcome is the
+    last entry of ``outcome_map`` ({container outcome: {label: child
+    outcome}}) that every child it names matches, else ``default_outcome``;
+    ``outcome_cb(outcomes)`` overrides it when it returns one (as SMACH). A
+    preempt reaches every running child. ``outcomes`` given to the callbacks:
+    {label: outcome, None while running}.
     """
 
     def __init__(self, outcomes, default_outcome, input_keys=(), output_keys=(),
@@ -79,19 +81,19 @@ class Concurrence(Container):
         errors, ending = [], []
         with self._done:
             self._child_outcomes = {label: None for label in self._order}
-        threads = [threading.Thread(target=self._run_child, args=(label, errors, ending),
-                                    name='concurrence:' + label, daemon=True)
-                   for label in self._order]
+        threads = {label: threading.Thread(target=self._run_child, args=(label, errors, ending),
+                                           name='concurrence:' + label, daemon=True)
+                   for label in self._order}
         self._call_cbs(self._start_cbs, list(self._order))
-        for thread in threads:
+        for thread in threads.values():
             thread.start()
         with self._done:
             while not (ending or errors or self.preempt_requested()):
-                self._done.wait()
+                self._done.wait(WAIT_STEP)
             for label, outcome in self._child_outcomes.items():
                 if outcome is None:
                     self._states[label].request_preempt()
-        for thread in threads:
+        for thread in threads.values():
             thread.join()
         outcomes = dict(self._child_outcomes)
         if errors:
@@ -100,7 +102,7 @@ class Concurrence(Container):
             self.service_preempt()
         outcome = self._outcome(outcomes)
         self._copy_out(parent_ud)
-        self._call_cbs(self._termination_cbs, [], outcome)
+        self._call_cbs(self._termination_cbs, list(self._order), outcome)
         return outcome
 
     def _run_child(self, label, errors, ending):
@@ -113,7 +115,7 @@ class Concurrence(Container):
                     "(registered: %s)" % (label, outcome, list(state.get_registered_outcomes())))
         except SmachError as exc:
             outcome, error = None, exc
-        except Exception as exc:
+        except BaseException as exc:          # SystemExit too: the container must hear of it
             outcome, error = None, InvalidUserCodeError(
                 "Could not execute state '%s' of type %s: %s\n%s"
                 % (label, type(state).__name__, exc, traceback.format_exc()))
@@ -136,21 +138,19 @@ class Concurrence(Container):
             self._done.notify_all()
 
     def _outcome(self, outcomes):
+        chosen = self._default_outcome
+        for outcome, children in self._outcome_map.items():
+            if all(outcomes[label] == expected for label, expected in children.items()):
+                chosen = outcome
         if self._outcome_cb is not None:
             try:
                 outcome = self._outcome_cb(dict(outcomes))
             except Exception as exc:
                 raise InvalidUserCodeError('Could not execute outcome callback %r: %s\n%s'
                                            % (self._outcome_cb, exc, traceback.format_exc()))
-            if outcome is None:
-                return self._default_outcome
-            if outcome not in self._outcomes:
+            if outcome is not None and outcome not in self._outcomes:
                 raise InvalidTransitionError(
                     "The outcome callback returned '%s', which is not an outcome of the "
                     "Concurrence %s" % (outcome, list(self._outcomes)))
-            return outcome
-        chosen = self._default_outcome
-        for outcome, children in self._outcome_map.items():
-            if all(outcomes[label] == expected for label, expected in children.items()):
-                chosen = outcome
+            chosen = outcome or chosen
         return chosen

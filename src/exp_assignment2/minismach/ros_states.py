@@ -3,11 +3,11 @@ smach_ros): what a SMACH state machine written for ROS uses.
 
 * :class:`SimpleActionState`: a goal to an action server ('succeeded',
   'aborted', 'preempted'); the goal from ``goal``, ``goal_key``,
-  ``goal_slots`` and/or ``goal_cb(ud, goal)``; the result to ``result_key``,
-  ``result_slots`` and/or ``result_cb(ud, status, result)``, which may
-  return the outcome;
+  ``goal_slots`` and/or ``goal_cb(ud, goal)``; ``feedback_cb(ud,
+  feedback)``; the result to ``result_key``, ``result_slots`` and/or
+  ``result_cb(ud, status, result)``, which may return the outcome;
 * :class:`MonitorState`: ``cond_cb(ud, msg)`` on each message of a topic;
-  False ends it 'invalid', ``max_checks`` Trues 'valid';
+  False ends it 'invalid', ``max_checks`` (> 0) Trues 'valid';
 * :class:`ServiceState`: one service call ('succeeded', 'aborted',
   'preempted'), the request and response as the action's goal and result;
 * :class:`IntrospectionServer`: smach_viewer's, kept with its signature; it
@@ -127,7 +127,8 @@ class SimpleActionState(_Exchange):
                  goal_cb=None, goal_cb_args=(), goal_cb_kwargs=None, result_key=None,
                  result_slots=(), result_cb=None, result_cb_args=(), result_cb_kwargs=None,
                  input_keys=(), output_keys=(), outcomes=(), exec_timeout=None,
-                 preempt_timeout=None, server_wait_timeout=None):
+                 preempt_timeout=None, server_wait_timeout=None, feedback_cb=None,
+                 feedback_cb_args=(), feedback_cb_kwargs=None):
         import actionlib
         if goal is None and goal_key is None:       # an empty goal, as smach_ros
             goal = action_spec().action_goal.goal
@@ -135,6 +136,10 @@ class SimpleActionState(_Exchange):
                            goal_cb_kwargs, result_key, result_slots, result_cb, result_cb_args,
                            result_cb_kwargs, input_keys, output_keys)
         self._name = action_name
+        self._feedback_cb, self._feedback_cb_args = feedback_cb, list(feedback_cb_args)
+        self._feedback_cb_kwargs = dict(feedback_cb_kwargs or {})
+        self.register_input_keys(_keys(feedback_cb, 'input'))
+        self.register_output_keys(_keys(feedback_cb, 'output'))
         self._exec_timeout = exec_timeout
         self._client = actionlib.SimpleActionClient(action_name, action_spec)
         self._server_wait_timeout = server_wait_timeout or rospy.Duration(60.0)
@@ -142,8 +147,7 @@ class SimpleActionState(_Exchange):
         self._waiter = threading.Thread(target=self._wait_for_server, daemon=True,
                                         name='SimpleActionState:' + action_name)
         self._waiter.start()
-        self._done = threading.Condition()
-        self._active = False
+        self._done = threading.Condition()     # never held while calling actionlib
         self._status = self._result = None
 
     def _wait_for_server(self):
@@ -161,11 +165,8 @@ class SimpleActionState(_Exchange):
 
     def request_preempt(self):
         State.request_preempt(self)
-        with self._done:
-            if self._active:
-                rospy.loginfo("Preempt requested on action '%s'" % self._name)
-                self._client.cancel_goal()
-            self._done.notify_all()
+        with self._done:         # the waiting execute cancels the goal (outside this lock:
+            self._done.notify_all()     # actionlib calls _on_done holding its own)
 
     def execute(self, ud):
         if not self._connected:
@@ -187,32 +188,47 @@ class SimpleActionState(_Exchange):
             return 'aborted'
         with self._done:
             self._status = self._result = None
-            self._active = True
-            start = rospy.get_rostime()
-            self._client.send_goal(goal, done_cb=self._on_done)
-            cancelled = False
-            while self._status is None and not rospy.is_shutdown():
-                self._done.wait(WAIT_STEP)
-                late = (self._exec_timeout is not None
-                        and rospy.get_rostime() - start > self._exec_timeout)
-                if late and not cancelled:
-                    rospy.logwarn('Action %s timed out after %s s.'
-                                  % (self._name, self._exec_timeout.to_sec()))
-                    self._client.cancel_goal()
-                    cancelled = True
-            self._active = False
-            status, result = self._status, self._result
+        feedback = None
+        if self._feedback_cb is not None:
+            feedback = lambda msg: self._feedback_cb(       # noqa: E731
+                ud, msg, *self._feedback_cb_args, **self._feedback_cb_kwargs)
+        start = rospy.get_rostime()
+        self._client.send_goal(goal, done_cb=self._on_done, feedback_cb=feedback)
+        status, result = self._wait(start)
         if status is None:                     # shut down while waiting
             return 'preempted' if self.preempt_requested() else 'aborted'
         from actionlib_msgs.msg import GoalStatus
         if status == GoalStatus.SUCCEEDED:
             outcome = 'succeeded'
-        elif status == GoalStatus.PREEMPTED and self.preempt_requested():
+        elif (status in (GoalStatus.PREEMPTED, GoalStatus.RECALLED)
+              and self.preempt_requested()):
             outcome = 'preempted'
             self.service_preempt()
         else:
             outcome = 'aborted'
         return self._reply(ud, result, status) or outcome
+
+    def _wait(self, start):
+        """(status, result) once the goal is done, or (None, None) at shutdown;
+        cancels it on a preempt or after exec_timeout."""
+        cancelled = False
+        while True:
+            with self._done:
+                if self._status is None and (cancelled or not self.preempt_requested()):
+                    self._done.wait(WAIT_STEP)
+                status, result = self._status, self._result
+            if status is not None or rospy.is_shutdown():
+                return status, result
+            late = (self._exec_timeout is not None
+                    and rospy.get_rostime() - start > self._exec_timeout)
+            if not cancelled and (late or self.preempt_requested()):
+                if late:
+                    rospy.logwarn('Action %s timed out after %s s.'
+                                  % (self._name, self._exec_timeout.to_sec()))
+                else:
+                    rospy.loginfo("Preempt requested on action '%s'" % self._name)
+                self._client.cancel_goal()
+                cancelled = True
 
     def _on_done(self, status, result):
         with self._done:
@@ -290,7 +306,7 @@ class MonitorState(State):
         if self.preempt_requested():
             self.service_preempt()
             return 'preempted'
-        if self._max_checks != -1 and self._checks >= self._max_checks:
+        if self._max_checks > 0 and self._checks >= self._max_checks:
             return 'valid'
         return 'invalid'
 
@@ -306,7 +322,7 @@ class MonitorState(State):
             rospy.logerr('Error thrown while executing condition callback %s: %s'
                          % (self._cond_cb, traceback.format_exc()))
             self._trigger.set()
-        if self._max_checks != -1 and self._checks >= self._max_checks:
+        if self._max_checks > 0 and self._checks >= self._max_checks:
             self._trigger.set()
 
     def request_preempt(self):

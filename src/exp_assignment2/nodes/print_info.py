@@ -23,8 +23,9 @@ def on_command(msg):
 
 
 def on_target(msg):
-    if len(msg.data) == 2 and grid.on_grid(msg.data[0], msg.data[1]):
-        rospy.loginfo('target: (%d, %d)', msg.data[0], msg.data[1])
+    target = grid.target_point(msg.data)
+    if target is not None:
+        rospy.loginfo('target: (%d, %d)', *target)
 
 
 def on_state(msg):

@@ -36,20 +36,29 @@ class ActionGoal(object):
     def __init__(self, client, goal, clock):
         self.clock, self.status, self.text = clock, None, ''
         self.goal, self.sends, self.lock = goal, 0, threading.Lock()
-        self.send(client)
-
-    def send(self, client):
-        """Send the goal (again: the handle before is dropped, and cancelled
-        in case it reached a server after all)."""
+        self.cancelled, self.handle = False, None
         with self.lock:
-            old = getattr(self, 'handle', None)
-            self.sends += 1
-            self.sent_at, self.unseen = time.monotonic(), 0
-            send = self.sends
-            self.handle = client.send_goal(
-                self.goal, transition_cb=lambda handle: self._on_transition(handle, send))
-        if old is not None:
-            old.cancel()
+            self._send(client)
+
+    def resend(self, client):
+        """Send the goal again, unless it was cancelled, ended or acknowledged
+        meanwhile: the handle before is dropped, and cancelled in case it
+        reached a server after all. True if sent."""
+        with self.lock:
+            if self.cancelled or not self.unacknowledged():
+                return False
+            old = self.handle
+            self._send(client)
+        old.cancel()
+        return True
+
+    def _send(self, client):
+        """(self.lock held; actionlib never calls back into it)"""
+        self.sends += 1
+        self.sent_at, self.unseen = time.monotonic(), 0
+        send = self.sends
+        self.handle = client.send_goal(
+            self.goal, transition_cb=lambda handle: self._on_transition(handle, send))
 
     def _on_transition(self, handle, send):
         if send != self.sends:             # a handle sent again since
@@ -74,6 +83,7 @@ class ActionGoal(object):
 
     def cancel(self):
         with self.lock:
+            self.cancelled = True
             if self.status is None:
                 self.handle.cancel()
 
@@ -85,7 +95,8 @@ class PlanningClient(object):
         self.name, self.clock = name, clock
         self.client = actionlib.ActionClient(name, PlanningAction)
         self.lock, self.waiting = threading.Lock(), []     # goals not acknowledged yet
-        rospy.Subscriber(name + '/status', GoalStatusArray, self._on_status, queue_size=1)
+        # (no queue_size: rospy shares one subscription per topic with actionlib's)
+        rospy.Subscriber(name + '/status', GoalStatusArray, self._on_status)
 
     def _on_status(self, msg):
         known = set(s.goal_id.id for s in msg.status_list)
@@ -96,11 +107,11 @@ class PlanningClient(object):
                     continue
                 goal.unseen += 1
                 waited = time.monotonic() - goal.sent_at
-                if goal.unseen >= UNSEEN and waited >= RESEND_AFTER:
+                if goal.unseen >= UNSEEN and waited >= RESEND_AFTER and \
+                        goal.resend(self.client):
                     rospy.logwarn('%s: the goal (%s) was not acknowledged by %s in %.1f s (a '
                                   'restarted server never got it): sent again',
                                   rospy.get_name(), goal_text(goal.goal), self.name, waited)
-                    goal.send(self.client)
 
     def wait_for_server(self, warn_every=30.0):
         """Wait until the server is up, however long it takes (the node has

@@ -151,11 +151,12 @@ class OmniMotionController(object):
         self.pose = (msg.pose.pose.position, yaw_of((q.x, q.y, q.z, q.w)))
 
     def _on_target(self, msg):
-        if len(msg.data) != 2 or not grid.on_grid(msg.data[0], msg.data[1]):
+        target = grid.target_point(msg.data)
+        if target is None:
             self.refuse('%s is not a grid point [x, y] in [%d, %d]; ignored'
                         % (list(msg.data)[:4], grid.GRID_MIN, grid.GRID_MAX))
             return
-        self.target = (msg.data[0], msg.data[1])
+        self.target = target
         rospy.set_param('/arrived', 0)
 
     def _tick(self, _event):

@@ -22,6 +22,7 @@ from exp_assignment2.sim import urdf as urdf_reader
 from exp_assignment2.sim.model import Model
 from exp_assignment2.sim.pacing import MAX_REAL_TIME_FACTOR, Pacer
 from exp_assignment2.sim.physics import Physics
+from exp_assignment2.refusal import RefusalLog
 from exp_assignment2.sim.poses import MAX_COORDINATE, world_region
 from exp_assignment2.sim.plugins.base import EngineHandle, Plugin, PluginError
 
@@ -74,6 +75,7 @@ class Engine(object):
         self.pacer = Pacer(real_time_factor, max_real_time_factor=max_real_time_factor)
         self.registry = dict(registry or {})
         self.bounds = tuple(bounds) if bounds is not None else INFINITE_BOUNDS
+        self._guard_logs = {}          # model name -> RefusalLog
         self._guard_region = world_region(
             self.bounds, GUARD_MARGIN,
             -FALL_DEPTH if all(map(math.isfinite, self.bounds)) else -MAX_COORDINATE)
@@ -227,9 +229,12 @@ class Engine(object):
         for model in self.models.values():
             trouble = (None if model.static or model.kinematic
                        else model.trouble(self._guard_region))
-            if trouble:
-                self.log.error('simulator: %s %s; put back at its spawn pose'
-                               % (model.name, trouble))
+            if trouble:        # one line per model and 5 s (a floorless world's bounds)
+                if model.name not in self._guard_logs:
+                    self._guard_logs[model.name] = RefusalLog(
+                        'simulator: ' + model.name, self.log.error, period=5.0,
+                        what='times put back')
+                self._guard_logs[model.name]('%s; put back at its spawn pose' % trouble)
                 model.reset()
                 for plugin in self.plugins[model.name]:
                     plugin.reset()

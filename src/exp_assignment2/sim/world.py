@@ -3,7 +3,10 @@
 A world is a dict (the ``~`` parameters of the simulator node, loaded from
 ``config/world_*.yaml``)::
 
-    bounds: [x_min, x_max, y_min, y_max]   # no driven body leaves this square
+    bounds: [x_min, x_max, y_min, y_max]   # no driven body leaves this square; Gazebo's
+                                           # services place bodies within it and 1 m,
+                                           # and the world has a floor: a body 10 m
+                                           # beyond it, or under the floor, is put back
     models:
       - name: robot
         description: robot_description   # URDF text on the parameter server,
