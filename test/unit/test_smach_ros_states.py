@@ -1,6 +1,7 @@
 """tools/original_env's smach_ros: SimpleActionState, ServiceState and
 MonitorState against a real action server, service and topic, in SMACH
-containers, as a student's state machine uses them (a ROS master of its own,
+containers, and a machine served by ActionServerWrapper, as a student's
+state machine uses them (a ROS master of its own,
 code run in the original-code environment)."""
 import os
 
@@ -15,7 +16,7 @@ pytestmark = pytest.mark.skipif(not os.path.exists(PYTHON), reason='needs Debian
 STUDENT = '''
 import threading
 import actionlib, rospy, smach, smach_ros
-from exp_assignment2.msg import PlanningAction, PlanningFeedback, PlanningResult
+from exp_assignment2.msg import PlanningAction, PlanningFeedback, PlanningGoal, PlanningResult
 from std_msgs.msg import Int32
 from std_srvs.srv import SetBool, SetBoolResponse
 
@@ -94,10 +95,37 @@ with aborting:
     smach.StateMachine.add('GO', goal_state(), transitions={'succeeded': 'other',
                            'preempted': 'other'})
 print('ABORTED', aborting.execute())
-try:
-    smach_ros.ActionServerWrapper
-except AttributeError as exc:
-    print('MISSING', str(exc).split(' is not')[0])
+
+# a machine as an action server: x > 0 succeeds at once, x == 0 waits on a
+# silent topic until the goal is cancelled
+@smach.cb_interface(input_keys=['action_goal'], output_keys=['action_feedback'],
+                    outcomes=['go', 'wait'])
+def look(ud):
+    ud.action_feedback = PlanningFeedback(stat='looked')
+    return 'go' if ud.action_goal.target_pose.pose.position.x > 0 else 'wait'
+served = smach.StateMachine(outcomes=['done', 'stopped', 'broken'])
+with served:
+    smach.StateMachine.add('LOOK', smach.CBState(look), transitions={'go': 'done',
+                                                                    'wait': 'WAIT'})
+    smach.StateMachine.add('WAIT', smach_ros.MonitorState('/silent', Int32, lambda ud, m: True),
+                           transitions={'valid': 'broken', 'invalid': 'broken',
+                                        'preempted': 'stopped'})
+smach_ros.ActionServerWrapper('/served', PlanningAction, served, succeeded_outcomes=['done'],
+                              preempted_outcomes=['stopped']).run_server()
+client = actionlib.SimpleActionClient('/served', PlanningAction)
+assert client.wait_for_server(rospy.Duration(30))
+said = []
+goal = PlanningGoal()
+goal.target_pose.pose.position.x = 1.0
+client.send_goal(goal)
+client.wait_for_result(rospy.Duration(30))
+first = client.get_state()
+goal.target_pose.pose.position.x = 0.0            # LOOK -> WAIT: a transition, so feedback
+client.send_goal(goal, feedback_cb=lambda fb: said.append(fb.stat))
+rospy.sleep(1.0)
+client.cancel_goal()
+client.wait_for_result(rospy.Duration(30))
+print('SERVED', first, client.get_state(), said[:1])
 rospy.signal_shutdown('done')
 '''
 
@@ -109,4 +137,4 @@ def test_a_students_machine_of_action_service_and_monitor_states_runs(ros_master
     assert lines[0].split() == ['OUTCOME', 'done', 'CALL', 'WATCH', 'BOTH', 'got', 'True',
                                 'PlanningResult', 'started'], proc.stdout + proc.stderr
     assert lines[1] == 'ABORTED aborted'
-    assert lines[2] == 'MISSING smach_ros.ActionServerWrapper'
+    assert lines[2] == "SERVED 3 2 ['looked']"

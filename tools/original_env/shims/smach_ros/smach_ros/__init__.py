@@ -2,8 +2,8 @@
 
 This directory is on PYTHONPATH only inside tools/original_env/shell.sh, and
 only when ``import smach_ros`` failed there before (a real smach_ros always
-wins). SimpleActionState, ServiceState, MonitorState and IntrospectionServer
-come from ``exp_assignment2.minismach.ros_states`` (see it for what each does;
+wins). SimpleActionState, ServiceState, MonitorState, ActionServerWrapper and
+IntrospectionServer come from ``exp_assignment2.minismach.ros_states`` (see it for what each does;
 the introspection server publishes nothing: smach_viewer is not in Debian).
 Beside a real smach, whose states they are not, only IntrospectionServer.
 """
@@ -15,7 +15,8 @@ _shim = getattr(smach, '_impl', None)       # exp_assignment2's smach (tools/ori
 _impl = importlib.import_module(
     (_shim.__name__ if _shim else 'exp_assignment2.minismach') + '.ros_states')
 
-__all__ = (['SimpleActionState', 'ServiceState', 'MonitorState', 'IntrospectionServer']
+__all__ = (['SimpleActionState', 'ServiceState', 'MonitorState', 'ActionServerWrapper',
+            'IntrospectionServer']
            if _shim else ['IntrospectionServer'])
 globals().update((name, getattr(_impl, name)) for name in __all__)
 
