@@ -363,3 +363,22 @@ def test_an_outcome_callback_that_says_nothing_leaves_the_mapped_outcome():
     with cc:
         smach.Concurrence.add('ONE', Returns('a'))
     assert cc.execute() == 'mapped'
+
+
+def test_an_iterator_runs_its_state_per_item_until_a_break_or_the_end():
+    seen = []
+
+    @smach.cb_interface(input_keys=['item'], outcomes=['next', 'found'])
+    def look(ud):
+        seen.append(ud.item)
+        return 'found' if ud.item == 'ball' else 'next'
+    it = smach.Iterator(outcomes=['found_it', 'none'], it=['grass', 'ball', 'kennel'],
+                        it_label='item', exhausted_outcome='none')
+    with it:
+        smach.Iterator.set_contained_state('LOOK', smach.CBState(look), loop_outcomes=['next'],
+                                           final_outcome_map={'found': 'found_it'})
+    assert it.execute() == 'found_it' and seen == ['grass', 'ball']
+    seen[:] = []
+    with it:
+        smach.Iterator.set_iteritems(lambda: iter(['grass', 'kennel']), 'item')
+    assert it.execute() == 'none' and seen == ['grass', 'kennel']

@@ -10,8 +10,9 @@ the API the package (and typical SMACH code) uses is provided:
 * :class:`StateMachine` (``with sm:`` + :meth:`StateMachine.add`), userdata
   with remapping, start/transition/termination callbacks,
 * :class:`Sequence` (states in the order added, joined by a connector
-  outcome) and :class:`Concurrence` (states at once, an outcome map or
-  callback, a child termination callback),
+  outcome), :class:`Concurrence` (states at once, an outcome map or
+  callback, a child termination callback) and :class:`Iterator` (one state
+  once per item),
 * the error classes :class:`InvalidStateError`,
   :class:`InvalidTransitionError`, :class:`InvalidUserCodeError`.
 
@@ -24,13 +25,14 @@ in :class:`InvalidUserCodeError`.
 # relative imports: tools/original_env's smach loads this package by its path
 # when ``exp_assignment2`` is a user's package of that name
 from .concurrence import Concurrence
+from .iterator import Iterator
 from .machine import Container, Sequence, StateMachine
 from .states import (CBState, InvalidConstructionError, InvalidStateError,
                      InvalidTransitionError, InvalidUserCodeError, Remapper, SmachError, State,
                      UserData, cb_interface)
 
 __all__ = [
-    'State', 'CBState', 'cb_interface', 'StateMachine', 'Sequence', 'Concurrence',
+    'State', 'CBState', 'cb_interface', 'StateMachine', 'Sequence', 'Concurrence', 'Iterator',
     'Container', 'UserData',
     'Remapper', 'SmachError', 'InvalidStateError', 'InvalidTransitionError',
     'InvalidUserCodeError', 'InvalidConstructionError',

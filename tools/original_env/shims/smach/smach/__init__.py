@@ -3,7 +3,7 @@
 This directory is on PYTHONPATH only inside tools/original_env/shell.sh, and
 only when ``import smach`` failed there before (a real smach always wins).
 Everything comes from ``exp_assignment2.minismach``: State, StateMachine
-(``with sm:`` + ``StateMachine.add``), Sequence, Concurrence, CBState,
+(``with sm:`` + ``StateMachine.add``), Sequence, Concurrence, Iterator, CBState,
 cb_interface, UserData, Remapper and the SMACH exceptions.
 """
 import importlib
