@@ -4,6 +4,7 @@ containers, and a machine served by ActionServerWrapper, as a student's
 state machine uses them (a ROS master of its own,
 code run in the original-code environment)."""
 import os
+import subprocess
 
 import pytest
 
@@ -87,14 +88,14 @@ with sm:
 trail = []
 sm.register_transition_cb(lambda ud, active: trail.append(active[0]))
 print('OUTCOME', sm.execute(), ' '.join(trail), sm.userdata.said,
-      type(sm.userdata.result).__name__, heard[0])
+      type(sm.userdata.result).__name__, heard[0], flush=True)
 
 aborting = smach.StateMachine(outcomes=['aborted', 'other'])
 aborting.userdata.x = -1.0
 with aborting:
     smach.StateMachine.add('GO', goal_state(), transitions={'succeeded': 'other',
                            'preempted': 'other'})
-print('ABORTED', aborting.execute())
+print('ABORTED', aborting.execute(), flush=True)
 
 # a machine as an action server: x > 0 succeeds at once, x == 0 waits on a
 # silent topic until the goal is cancelled
@@ -125,13 +126,16 @@ client.send_goal(goal, feedback_cb=lambda fb: said.append(fb.stat))
 rospy.sleep(1.0)
 client.cancel_goal()
 client.wait_for_result(rospy.Duration(30))
-print('SERVED', first, client.get_state(), said[:1])
+print('SERVED', first, client.get_state(), said[:1], flush=True)
 rospy.signal_shutdown('done')
 '''
 
 
 def test_a_students_machine_of_action_service_and_monitor_states_runs(ros_master):
-    proc = run(STUDENT, original_env(ros_master), timeout=90)
+    try:
+        proc = run(STUDENT, original_env(ros_master), timeout=180)
+    except subprocess.TimeoutExpired as exc:       # where it stopped
+        pytest.fail('no end after 180 s:\n%s\n%s' % (exc.stdout, exc.stderr))
     assert proc.returncode == 0, proc.stdout + proc.stderr
     lines = [line for line in proc.stdout.splitlines() if not line.startswith('[')]  # rospy's
     assert lines[0].split() == ['OUTCOME', 'done', 'CALL', 'WATCH', 'BOTH', 'got', 'True',

@@ -150,6 +150,7 @@ class SimpleActionState(_Exchange):
         self._waiter.start()
         self._done = threading.Condition()     # never held while calling actionlib
         self._status = self._result = None
+        self._sends = 0
 
     def _wait_for_server(self):
         """Up to server_wait_timeout of ROS time (counted once it runs), or a preempt."""
@@ -167,7 +168,7 @@ class SimpleActionState(_Exchange):
     def request_preempt(self):
         State.request_preempt(self)
         with self._done:         # the waiting execute cancels the goal (outside this lock:
-            self._done.notify_all()     # actionlib calls _on_done holding its own)
+            self._done.notify_all()     # actionlib calls _on_transition holding its own)
 
     def execute(self, ud):
         if not self._connected:
@@ -189,13 +190,19 @@ class SimpleActionState(_Exchange):
             return 'aborted'
         with self._done:
             self._status = self._result = None
+            self._sends += 1
+            send = self._sends
         feedback = None
         if self._feedback_cb is not None:
-            feedback = lambda msg: self._feedback_cb(       # noqa: E731
+            feedback = lambda _handle, msg: self._feedback_cb(       # noqa: E731
                 ud, msg, *self._feedback_cb_args, **self._feedback_cb_kwargs)
         start = rospy.get_rostime()
-        self._client.send_goal(goal, done_cb=self._on_done, feedback_cb=feedback)
-        status, result = self._wait(start)
+        # a goal handle of its own (SimpleActionClient drops the callbacks that
+        # come before send_goal has stored its handle: on a loaded machine,
+        # the feedback and the goal's first transitions)
+        handle = self._client.action_client.send_goal(
+            goal, lambda gh: self._on_transition(gh, send), feedback)
+        status, result = self._wait(start, handle)
         if status is None:                     # shut down while waiting
             return 'preempted' if self.preempt_requested() else 'aborted'
         from actionlib_msgs.msg import GoalStatus
@@ -209,7 +216,7 @@ class SimpleActionState(_Exchange):
             outcome = 'aborted'
         return self._reply(ud, result, status) or outcome
 
-    def _wait(self, start):
+    def _wait(self, start, handle):
         """(status, result) once the goal is done, or (None, None) at shutdown;
         cancels it on a preempt or after exec_timeout."""
         cancelled = False
@@ -228,13 +235,16 @@ class SimpleActionState(_Exchange):
                                   % (self._name, self._exec_timeout.to_sec()))
                 else:
                     rospy.loginfo("Preempt requested on action '%s'" % self._name)
-                self._client.cancel_goal()
+                handle.cancel()
                 cancelled = True
 
-    def _on_done(self, status, result):
-        with self._done:
-            self._status, self._result = status, result
-            self._done.notify_all()
+    def _on_transition(self, handle, send):
+        import actionlib
+        if handle.get_comm_state() == actionlib.CommState.DONE:
+            with self._done:
+                if send == self._sends and self._status is None:     # not an earlier goal
+                    self._status, self._result = handle.get_goal_status(), handle.get_result()
+                self._done.notify_all()
 
 
 class ServiceState(_Exchange):
@@ -390,6 +400,8 @@ class ActionServerWrapper(object):
             for field in goal.__slots__:
                 ud[field] = getattr(goal, field)
         ud[self._result_key] = self._result_class()
+        if self._server.is_preempt_requested():    # cancelled while it waited to start:
+            self.wrapped_container.request_preempt()     # no preempt callback comes then
         try:
             outcome = self.wrapped_container.execute(ud)
         except Exception as exc:
