@@ -81,7 +81,7 @@ class Concurrence(Container):
         errors, ending = [], []
         with self._done:
             self._child_outcomes = {label: None for label in self._order}
-        threads = {label: threading.Thread(target=self._run_child, args=(label, errors, ending),
+        threads = {label: threading.Thread(target=self._child_thread, args=(label, errors, ending),
                                            name='concurrence:' + label, daemon=True)
                    for label in self._order}
         self._call_cbs(self._start_cbs, list(self._order))
@@ -105,7 +105,7 @@ class Concurrence(Container):
         self._call_cbs(self._termination_cbs, list(self._order), outcome)
         return outcome
 
-    def _run_child(self, label, errors, ending):
+    def _child_thread(self, label, errors, ending):
         state = self._states[label]
         try:
             outcome = state.execute(self._child_view(label))

@@ -1,8 +1,6 @@
 """SMACH's Iterator container (see :mod:`exp_assignment2.minismach`)."""
-import traceback
-
 from .machine import Container
-from .states import InvalidStateError, InvalidUserCodeError, SmachError
+from .states import InvalidStateError
 
 
 class Iterator(Container):
@@ -62,7 +60,7 @@ class Iterator(Container):
     def execute(self, parent_ud=None):
         if self._state_label is None:
             raise InvalidStateError('Iterator has no contained state (set_contained_state)')
-        label, state = self._state_label, self._states[self._state_label]
+        label = self._state_label
         self._copy_in(parent_ud)
         self.is_running = True
         self._call_cbs(self._start_cbs, [label])
@@ -71,14 +69,7 @@ class Iterator(Container):
         try:
             for item in items:
                 self.userdata[self._items_label] = item
-                try:
-                    outcome = state.execute(self._child_view(label))
-                except SmachError:
-                    raise
-                except Exception as exc:
-                    raise InvalidUserCodeError(
-                        "Could not execute iterator state '%s' of type %s: %s\n%s"
-                        % (label, type(state).__name__, exc, traceback.format_exc()))
+                outcome = self._run_child(label)
                 if (self.preempt_requested() or outcome in self._break_outcomes
                         or (self._loop_outcomes and outcome not in self._loop_outcomes)):
                     self.service_preempt()

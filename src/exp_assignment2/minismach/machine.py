@@ -84,6 +84,19 @@ class Container(State):
         return Remapper(self.userdata, state.get_registered_input_keys(),
                         state.get_registered_output_keys(), self._remappings[label])
 
+    def _run_child(self, label):
+        """Execute child ``label`` on its view of the userdata; user code's
+        exceptions come out as InvalidUserCodeError."""
+        state = self._states[label]
+        try:
+            return state.execute(self._child_view(label))
+        except SmachError:
+            raise
+        except Exception as exc:
+            raise InvalidUserCodeError(
+                "Could not execute state '%s' of type %s: %s\n%s"
+                % (label, type(state).__name__, exc, traceback.format_exc()))
+
     def _copy_in(self, parent_ud):
         if parent_ud is not None:
             for key in self._input_keys:
@@ -193,14 +206,7 @@ class StateMachine(Container):
         label, state = self._current_label, self._current_state
         if self.preempt_requested():
             state.request_preempt()
-        try:
-            outcome = state.execute(self._child_view(label))
-        except SmachError:
-            raise
-        except Exception as exc:
-            raise InvalidUserCodeError(
-                "Could not execute state '%s' of type %s: %s\n%s"
-                % (label, type(state).__name__, exc, traceback.format_exc()))
+        outcome = self._run_child(label)
         if outcome not in state.get_registered_outcomes():
             raise InvalidTransitionError(
                 "State '%s' returned outcome '%s', which it did not register "
