@@ -35,7 +35,8 @@ class Iterator(Container):
             raise InvalidStateError("Iterator already contains '%s'" % iterator._state_label)
         iterator._states[label], iterator._remappings[label] = state, {}
         iterator._state_label = label
-        iterator._loop_outcomes, iterator._break_outcomes = list(loop_outcomes), list(break_outcomes)
+        iterator._loop_outcomes = list(loop_outcomes)
+        iterator._break_outcomes = list(break_outcomes)
         iterator._final_outcome_map = dict(final_outcome_map or {})
         return state
 

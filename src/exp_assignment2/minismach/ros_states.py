@@ -6,13 +6,11 @@ smach_ros): what a SMACH state machine written for ROS uses.
   ``goal_slots`` and/or ``goal_cb(ud, goal)``; ``feedback_cb(ud,
   feedback)``; the result to ``result_key``, ``result_slots`` and/or
   ``result_cb(ud, status, result)``, which may return the outcome;
-* :class:`MonitorState`: ``cond_cb(ud, msg)`` on each message of a topic;
-  False ends it 'invalid', ``max_checks`` (> 0) Trues 'valid';
+* :class:`~.ros_monitor.MonitorState` (its own module);
 * :class:`ServiceState`: one service call ('succeeded', 'aborted',
   'preempted'), the request and response as the action's goal and result;
-* :class:`ActionServerWrapper`: a container served as an action;
-* :class:`IntrospectionServer`: smach_viewer's, kept with its signature; it
-  publishes nothing (smach_viewer is not in Debian either).
+* the server side (``ActionServerWrapper``, ``IntrospectionServer``) is in
+  :mod:`.ros_servers`.
 
 Semantics follow smach_ros: a preempt cancels the goal (or stops the
 monitor) and the state ends 'preempted'; an action failure of any kind is
@@ -41,22 +39,6 @@ def _cb_outcome(state, what, outcome):
                      % (what, outcome, list(state.get_registered_outcomes())))
         return 'aborted'
     return outcome
-
-
-class IntrospectionServer(object):
-    """``IntrospectionServer(server_name, state, path)``; start, stop and clear do nothing."""
-
-    def __init__(self, server_name, state, path):
-        self._server_name, self._state, self._path = server_name, state, path
-
-    def start(self):
-        pass
-
-    def stop(self):
-        pass
-
-    def clear(self):
-        pass
 
 
 class _Exchange(State):
@@ -289,134 +271,3 @@ class ServiceState(_Exchange):
             rospy.logerr("Exception when calling service '%s': %s" % (self._name, exc))
             return 'aborted'
         return self._reply(ud, response) or 'succeeded'
-
-
-class MonitorState(State):
-    """smach_ros's MonitorState (see the module)."""
-
-    def __init__(self, topic, msg_type, cond_cb, max_checks=-1, input_keys=(), output_keys=()):
-        State.__init__(self, ['valid', 'invalid', 'preempted'], input_keys, output_keys)
-        self._topic, self._msg_type, self._cond_cb = topic, msg_type, cond_cb
-        self._max_checks = max_checks
-        self._trigger = threading.Event()
-        self._checks = 0
-
-    def execute(self, ud):
-        if self.preempt_requested():
-            self.service_preempt()
-            return 'preempted'
-        self._checks = 0
-        self._trigger.clear()
-        sub = rospy.Subscriber(self._topic, self._msg_type, self._on_message, callback_args=ud)
-        try:
-            while not self._trigger.wait(WAIT_STEP):
-                if rospy.is_shutdown():
-                    break
-        finally:
-            sub.unregister()
-        if self.preempt_requested():
-            self.service_preempt()
-            return 'preempted'
-        if self._max_checks > 0 and self._checks >= self._max_checks:
-            return 'valid'
-        return 'invalid'
-
-    def _on_message(self, msg, ud):
-        if self._trigger.is_set():
-            return
-        try:
-            if self._cond_cb(ud, msg):
-                self._checks += 1
-            else:
-                self._trigger.set()
-        except Exception:
-            rospy.logerr('Error thrown while executing condition callback %s: %s'
-                         % (self._cond_cb, traceback.format_exc()))
-            self._trigger.set()
-        if self._max_checks > 0 and self._checks >= self._max_checks:
-            self._trigger.set()
-
-    def request_preempt(self):
-        State.request_preempt(self)
-        self._trigger.set()
-
-
-class ActionServerWrapper(object):
-    """smach_ros's ActionServerWrapper: a container run as an action server.
-
-    Each goal runs the container (:meth:`run_server` starts the server): the
-    goal in userdata ``goal_key`` (and its fields as ``goal_slots_map`` says,
-    or all of them with ``expand_goal_slots``), an empty result in
-    ``result_key``; the container's outcome ends the goal as
-    ``succeeded_outcomes``, ``preempted_outcomes`` or else aborted, with the
-    result from ``result_key`` (fields from ``result_slots_map``, or from
-    userdata keys of the same names with ``pack_result_slots``). A cancel
-    preempts the container; ``feedback_key`` in userdata is published as
-    feedback at each of its transitions. The goal, feedback and result keys
-    are made the container's own input and output keys.
-    """
-
-    def __init__(self, server_name, action_spec, wrapped_container, succeeded_outcomes=(),
-                 aborted_outcomes=(), preempted_outcomes=(), goal_key='action_goal',
-                 feedback_key='action_feedback', result_key='action_result',
-                 goal_slots_map=None, feedback_slots_map=None, result_slots_map=None,
-                 expand_goal_slots=False, pack_result_slots=False):
-        import actionlib
-        from .states import UserData
-        self.wrapped_container, self.userdata = wrapped_container, UserData()
-        self._succeeded, self._preempted = set(succeeded_outcomes), set(preempted_outcomes)
-        self._aborted = set(aborted_outcomes)
-        self._goal_key, self._feedback_key, self._result_key = goal_key, feedback_key, result_key
-        self._goal_slots_map = dict(goal_slots_map or {})
-        self._result_slots_map = dict(result_slots_map or {})
-        self._expand_goal_slots, self._pack_result_slots = expand_goal_slots, pack_result_slots
-        self._result_class = type(action_spec().action_result.result)
-        goal_fields = list(action_spec().action_goal.goal.__slots__)
-        wrapped_container.register_input_keys(
-            [goal_key] + list(self._goal_slots_map.values())
-            + (goal_fields if expand_goal_slots else []))
-        wrapped_container.register_output_keys([feedback_key, result_key]
-                                               + list(self._result_slots_map.values()))
-        self._server = actionlib.SimpleActionServer(server_name, action_spec,
-                                                    execute_cb=self.execute_cb, auto_start=False)
-        self._server.register_preempt_callback(wrapped_container.request_preempt)
-        wrapped_container.register_transition_cb(self._publish_feedback)
-
-    def run_server(self):
-        """Start the action server; returns it."""
-        self._server.start()
-        return self._server
-
-    def _publish_feedback(self, userdata, *_args):
-        if self._feedback_key in userdata:
-            self._server.publish_feedback(userdata[self._feedback_key])
-
-    def execute_cb(self, goal):
-        ud = self.userdata
-        ud[self._goal_key] = goal
-        for field, key in self._goal_slots_map.items():
-            ud[key] = getattr(goal, field)
-        if self._expand_goal_slots:
-            for field in goal.__slots__:
-                ud[field] = getattr(goal, field)
-        ud[self._result_key] = self._result_class()
-        if self._server.is_preempt_requested():    # cancelled while it waited to start:
-            self.wrapped_container.request_preempt()     # no preempt callback comes then
-        try:
-            outcome = self.wrapped_container.execute(ud)
-        except Exception as exc:
-            rospy.logerr('Exception thrown while executing the wrapped container: %s' % exc)
-            outcome = None
-        result = ud[self._result_key]
-        for field, key in self._result_slots_map.items():
-            setattr(result, field, ud[key])
-        if self._pack_result_slots:
-            for field in result.__slots__:
-                if field in ud:
-                    setattr(result, field, ud[field])
-        if outcome in self._succeeded:
-            self._server.set_succeeded(result)
-        elif outcome in self._preempted:
-            self._server.set_preempted(result)
-        else:
-            self._server.set_aborted(result)

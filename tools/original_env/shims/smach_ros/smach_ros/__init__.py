@@ -3,8 +3,9 @@
 This directory is on PYTHONPATH only inside tools/original_env/shell.sh, and
 only when ``import smach_ros`` failed there before (a real smach_ros always
 wins). SimpleActionState, ServiceState, MonitorState, ActionServerWrapper and
-IntrospectionServer come from ``exp_assignment2.minismach.ros_states`` (see it for what each does;
-the introspection server publishes nothing: smach_viewer is not in Debian).
+IntrospectionServer come from ``exp_assignment2.minismach``'s ``ros_states``,
+``ros_monitor`` and ``ros_servers`` (see them for what each does; the
+introspection server publishes nothing: smach_viewer is not in Debian).
 Beside a real smach, whose states they are not, only IntrospectionServer.
 """
 import importlib
@@ -12,13 +13,17 @@ import importlib
 import smach
 
 _shim = getattr(smach, '_impl', None)       # exp_assignment2's smach (tools/original_env)
-_impl = importlib.import_module(
-    (_shim.__name__ if _shim else 'exp_assignment2.minismach') + '.ros_states')
+_package = _shim.__name__ if _shim else 'exp_assignment2.minismach'
+_parts = {name: importlib.import_module('%s.%s' % (_package, module))
+          for module, names in (('ros_states', ('SimpleActionState', 'ServiceState')),
+                                ('ros_monitor', ('MonitorState',)),
+                                ('ros_servers', ('ActionServerWrapper', 'IntrospectionServer')))
+          for name in names}
 
 __all__ = (['SimpleActionState', 'ServiceState', 'MonitorState', 'ActionServerWrapper',
             'IntrospectionServer']
            if _shim else ['IntrospectionServer'])
-globals().update((name, getattr(_impl, name)) for name in __all__)
+globals().update((name, getattr(_parts[name], name)) for name in __all__)
 
 
 def __getattr__(name):
