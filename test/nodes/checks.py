@@ -4,6 +4,7 @@ Waits are events: each subscriber notifies a :class:`RosClock` and a check
 waits on it with a deadline in ROS time (the simulator's), so nothing polls;
 the .test file's time-limit bounds every run in wall time.
 """
+import contextlib
 import math
 import os
 import signal
@@ -19,6 +20,7 @@ from nav_msgs.msg import Odometry
 from rosgraph_msgs.msg import Log
 from sensor_msgs.msg import JointState
 from std_msgs.msg import String
+from std_srvs.srv import Empty
 
 from exp_assignment2.geometry import yaw_of
 from exp_assignment2.ros.clock import RosClock
@@ -67,6 +69,33 @@ def eventually(predicate, ros_seconds=10.0, wall_seconds=10.0):
             return True
         if time.monotonic() >= wall_end:
             return False
+
+
+@contextlib.contextmanager
+def world_held():
+    """The world paused for the block (Gazebo's pause_physics), for a check
+    that waits on wall time (a throttle's second, a respawn): at
+    real_time_factor 0 the simulator would otherwise step through it at up
+    to 20x, a simulated minute of CPU for nothing. ROS time stands still in
+    the block; nodes and their wall-time throttles go on."""
+    rospy.wait_for_service('/gazebo/pause_physics', timeout=30.0)
+    rospy.ServiceProxy('/gazebo/pause_physics', Empty)()
+    try:
+        yield
+    finally:
+        rospy.ServiceProxy('/gazebo/unpause_physics', Empty)()
+
+
+def wall_until(predicate, wall_seconds=10.0):
+    """True once ``predicate()`` holds (asked every 20 ms), False after
+    ``wall_seconds``: the wait for a held world (:func:`world_held`), where
+    ROS time stands still and a wait in ROS time would never end."""
+    end = time.monotonic() + wall_seconds
+    while not predicate():
+        if time.monotonic() >= end:
+            return False
+        time.sleep(0.02)
+    return True
 
 
 class SimpleClient(actionlib.SimpleActionClient):
