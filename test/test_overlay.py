@@ -193,6 +193,8 @@ def test_a_broken_cpp_node_gives_one_line_naming_file_and_line(built):
     assert 'undeclared_centre' in line and 'was not declared' in line
 
 
+# built on its own, beside the module's package: another worker's group
+@pytest.mark.xdist_group('overlay_renamed')
 def test_a_package_named_otherwise_works_too(tmp_path):
     """my_dog: the template renamed, naming a catkin package Debian lacks."""
     package = tmp_path / 'my_dog'
