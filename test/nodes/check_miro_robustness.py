@@ -15,7 +15,7 @@ from std_msgs.msg import Float64MultiArray, Int64MultiArray, String
 from std_srvs.srv import Empty
 
 from checks import (Pose, Rosout, Watch, clock, eventually, kill_node, node_pid,
-                    wait_for_every_subscriber, wait_for_subscribers, wait_until)
+                    wait_for_every_subscriber, wait_for_subscribers, wait_until, world_held)
 from exp_assignment2.msg import Gesture
 
 BURST = 1000
@@ -40,7 +40,8 @@ class TestMiroRobustness(unittest.TestCase):
             self.pubs['/command'].publish(String('go_nowhere %d' % i))
             self.pubs['/gesture'].publish(Gesture(person_x=-i, person_y=0, point_x=1,
                                                   point_y=1))
-        time.sleep(3.0)                         # throttling is in wall time
+        with world_held():                      # throttling is in wall time
+            time.sleep(3.0)
         for topic in ('/voice', '/command', '/gesture'):
             lines = self.rosout.lines(topic + ':')
             rospy.loginfo('%s: %d bad messages gave %d lines', topic, BURST, len(lines))
@@ -75,9 +76,9 @@ class TestMiroRobustness(unittest.TestCase):
         for _ in range(5):          # a target MiRo has not reached yet, the world paused
             count, since = targets.count, self.arrivals.count
             self.assertTrue(wait_until(lambda: targets.count > count, 60.0), 'no new target')
-            target = tuple(targets.msg.data)
             pause()        # the respawn takes wall time: no order times out meanwhile
-            time.sleep(0.5)           # (wall) an arrival already on its way lands
+            time.sleep(0.5)    # (wall) what is on its way lands: an arrival, a newer target
+            target = tuple(targets.msg.data)     # the one the grounding sends again
             if not arrived_at(target, since):
                 break
             unpause()

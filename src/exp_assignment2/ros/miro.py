@@ -10,6 +10,7 @@ parameters.
 """
 import math
 import threading
+import time
 
 import rospy
 from geometry_msgs.msg import Twist
@@ -24,13 +25,15 @@ from exp_assignment2.msg import Gesture
 from exp_assignment2.refusal import parse_or_refuse
 from exp_assignment2.ros.log import refusal_log
 
-ACK_TIMEOUT = 1.0   # s of ROS time for the grounding node to answer an order
+ACK_TIMEOUT = 1.0   # s of ROS time, and of wall time, for the grounding node to answer
 QUIET_TRIES = 10    # unanswered orders sent again before a warning
 
 
 class MiroGoal(object):
     """One order: acknowledged by its ``/target_pos``, done at its ``/arrival``
-    or when a later order replaces it."""
+    or when a later order replaces it. An order grounded twice (sent again
+    before the first answer came) takes the later target: the controller
+    drives to the newest one."""
 
     def __init__(self, command):
         self.command, self.target, self.state = command, None, 'sent'
@@ -67,7 +70,7 @@ class RosMiroBody(object):
         tries = 0
         while not self.clock.is_shutdown():
             self.pub.publish(String(command))
-            if self.clock.wait_until(lambda: goal.target is not None, ACK_TIMEOUT):
+            if self._answered(goal):
                 break
             tries += 1
             if tries % QUIET_TRIES == 0:   # the first ones: the grounding node is starting
@@ -75,11 +78,25 @@ class RosMiroBody(object):
                               command, tries * ACK_TIMEOUT)
         return goal
 
+    def _answered(self, goal):
+        """Whether ``goal`` was grounded within ACK_TIMEOUT of ROS time and
+        of wall time: at real_time_factor 0 a second of ROS time may be 50 ms
+        of wall time, and an order sent again too soon is grounded twice (two
+        random targets for one 'go_rand')."""
+        sent = time.monotonic()
+        if self.clock.wait_until(lambda: goal.target is not None, ACK_TIMEOUT):
+            return True
+        while time.monotonic() - sent < ACK_TIMEOUT and not self.clock.is_shutdown():
+            if goal.target is not None:
+                return True
+            time.sleep(0.02)
+        return goal.target is not None
+
     def _on_target(self, msg):
         label = msg.layout.dim[0].label if msg.layout.dim else None
         with self.lock:
             goal = self.goal
-            if goal is None or goal.target is not None or label != goal.command:
+            if goal is None or goal.done() or label != goal.command:
                 return
             goal.target, goal.state = tuple(msg.data[:2]), 'moving'
         self.clock.notify()
