@@ -11,8 +11,8 @@ import rostest
 from rosgraph_msgs.msg import Log
 from sensor_msgs.msg import CompressedImage, Image
 
-from checks import DogObserver, Watch, clock, node_pid, wait_for_graph, wait_for_subscribers, \
-    wait_until
+from checks import DogObserver, Watch, clock, wait_for_subscribers, wait_until
+from system_checks import node_pid, wait_for_graph
 
 TOPIC = '/robot/camera1/image_raw/compressed'
 DECODERS = ('/state_machine', '/robot_to_ball', '/image_decompress')

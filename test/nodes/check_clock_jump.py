@@ -16,8 +16,8 @@ from geometry_msgs.msg import Twist
 from rosgraph_msgs.msg import Clock, Log
 from std_srvs.srv import Empty
 
-from checks import (DogObserver, SimpleClient, Watch, clock, eventually, finished, node_pid,
-                    wait_until)
+from checks import DogObserver, SimpleClient, Watch, clock, eventually, finished, wait_until
+from system_checks import node_pid
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 

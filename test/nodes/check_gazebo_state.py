@@ -15,7 +15,8 @@ from nav_msgs.msg import Odometry
 from rosgraph_msgs.msg import Log
 from std_srvs.srv import Empty
 
-from checks import Pose, Rosout, Watch, clock, wait_until, wall_until, world_held
+from checks import Pose, Rosout, Watch, clock, wait_until
+from system_checks import wall_until, world_held
 
 SERVICES = {'get_model_state': GetModelState, 'set_model_state': SetModelState,
             'get_link_state': GetLinkState, 'set_link_state': SetLinkState,

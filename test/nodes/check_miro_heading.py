@@ -10,7 +10,8 @@ import rostest
 from geometry_msgs.msg import Twist
 from std_msgs.msg import Float64MultiArray, String
 
-from checks import Pose, Watch, clock, wait_for_graph, wait_for_subscribers, wait_until
+from checks import Pose, Watch, clock, wait_for_subscribers, wait_until
+from system_checks import wait_for_graph
 
 TOLERANCE = 0.05
 

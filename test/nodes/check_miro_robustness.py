@@ -14,8 +14,8 @@ from geometry_msgs.msg import Twist
 from std_msgs.msg import Float64MultiArray, Int64MultiArray, String
 from std_srvs.srv import Empty
 
-from checks import (Pose, Rosout, Watch, clock, eventually, kill_node, node_pid,
-                    wait_for_every_subscriber, wait_for_subscribers, wait_until, world_held)
+from checks import Pose, Rosout, Watch, clock, eventually, wait_for_subscribers, wait_until
+from system_checks import kill_node, node_pid, wait_for_every_subscriber, world_held
 from exp_assignment2.msg import Gesture
 
 BURST = 1000

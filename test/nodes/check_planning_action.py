@@ -15,7 +15,8 @@ from rosgraph_msgs.msg import Log
 from std_srvs.srv import Empty
 
 from checks import (Pose, Rosout, SimpleClient, clock, eventually, finished, wait_for_subscribers,
-                    wait_until, world_held)
+                    wait_until)
+from system_checks import world_held
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 

@@ -14,8 +14,8 @@ from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import Twist
 from std_msgs.msg import String
 
-from checks import (DogObserver, SimpleClient, clock, eventually, finished, kill_node,
-                    node_pid, wait_for_subscribers, world_held)
+from checks import DogObserver, SimpleClient, clock, eventually, finished, wait_for_subscribers
+from system_checks import kill_node, node_pid, world_held
 from exp_assignment2.msg import PlanningAction
 from exp_assignment2.planning import make_goal
 

@@ -18,8 +18,8 @@ from sensor_msgs.msg import CameraInfo, CompressedImage, JointState
 from std_msgs.msg import Float64
 from std_srvs.srv import Empty
 
-from checks import (Pose, Rosout, Watch, clock, eventually, node_pid, wait_for_subscribers,
-                    wait_until)
+from checks import Pose, Rosout, Watch, clock, eventually, wait_for_subscribers, wait_until
+from system_checks import node_pid
 from exp_assignment2.sim import urdf
 from simulator_camera_checks import CameraChecks, angle_diff
 
