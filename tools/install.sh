@@ -10,10 +10,12 @@
 _as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
 
 _missing_debian() {
-  # one dpkg-query for all of them (one each cost 0.6 s of CPU a call of tools/run)
+  # one dpkg-query for all of them (one each cost 0.6 s of CPU a call of tools/run);
+  # it exits 1 when one is unknown to dpkg: not an error here (the callers run
+  # with errexit and pipefail, which a process substitution inherits)
   local installed
   installed=$(dpkg-query -W -f='${Package} ${Status}\n' "$@" 2>/dev/null \
-                | awk '$NF == "installed" {print $1}')
+                | awk '$NF == "installed" {print $1}') || true
   local p
   for p in "$@"; do
     [[ $'\n'"$installed"$'\n' == *$'\n'"$p"$'\n'* ]] || printf '%s\n' "$p"

@@ -5,6 +5,8 @@ import os
 import subprocess
 import time
 
+import pytest
+
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 INSTALL = os.path.join(REPO, 'tools', 'install.sh')
 
@@ -35,6 +37,27 @@ def test_what_is_installed_is_not_installed_again(tmp_path):
                          env=dict(os.environ, TMPDIR=str(tmp_path)))
     assert out.returncode == 0 and out.stderr == '', out.stderr
     assert not (tmp_path / 'exp_assignment2-install.lock').exists()
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason='install_debian runs apt-get through sudo')
+def test_what_is_missing_is_installed_under_errexit_and_pipefail(tmp_path):
+    """The callers (tools/run, shell.sh) run with ``set -eo pipefail``, which
+    the lock's process substitution inherits: dpkg-query's exit status for a
+    package it does not know once made the list empty, and nothing was
+    installed. apt-get is a fake here that says what it was asked."""
+    fake = tmp_path / 'bin' / 'apt-get'
+    fake.parent.mkdir()
+    fake.write_text('#!/bin/sh\necho "apt-get $*" >> "%s"\n' % (tmp_path / 'asked'))
+    fake.chmod(0o755)
+    script = 'set -eo pipefail; source "%s"; install_debian test dpkg exp2-no-such-package' % (
+        INSTALL)
+    env = dict(os.environ, TMPDIR=str(tmp_path), PATH='%s:%s' % (fake.parent, os.environ['PATH']))
+    out = subprocess.run(['bash', '-c', script], capture_output=True, text=True, timeout=30,
+                         env=env)
+    assert out.returncode == 0, out.stderr
+    assert '[test] installing Debian packages: exp2-no-such-package' in out.stderr
+    asked = (tmp_path / 'asked').read_text().splitlines()
+    assert asked[-1].endswith('install -y -qq exp2-no-such-package'), asked
 
 
 def test_the_overlay_build_takes_the_same_lock(tmp_path, monkeypatch):
