@@ -22,7 +22,9 @@ WS="${EXP2_WS:-$HOME/.cache/exp_assignment2_ws}"
 # ROS runs on Debian's python3, whatever python3 comes first on PATH.
 export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"
 
-APT_PACKAGES=(python3-tf python3-scipy python3-opencv python3-numpy python3-pip python3-cv-bridge)
+# tf-tools, tf2-tools: rosrun tf tf_echo / view_frames, static_transform_publisher of tf and tf2_ros
+APT_PACKAGES=(python3-tf python3-scipy python3-opencv python3-numpy python3-pip python3-cv-bridge
+              tf-tools tf2-tools)
 IMUTILS_VERSION=0.5.4
 XACRO_VERSION=1.13.3    # ROS 1's xacro (PyPI's 2.x is ROS 2's), for $(find xacro)/xacro
 
@@ -74,6 +76,10 @@ done
 # (packages/README.md); env.py puts them first on ROS_PACKAGE_PATH.
 EXP2_LAUNCH_PACKAGES=$(/usr/bin/python3 "$HERE/launch_packages.py" "$WS")
 export EXP2_LAUNCH_PACKAGES
+# `xacro` on PATH is that xacro too, as ROS's is (command="xacro ..." in a
+# launch file), not PyPI's script, whose load_yaml fails under Debian's PyYAML 6
+ln -sfn "$EXP2_LAUNCH_PACKAGES/xacro/xacro" "$EXP2_ORIGINAL_BIN/.xacro.$$"
+mv -fT "$EXP2_ORIGINAL_BIN/.xacro.$$" "$EXP2_ORIGINAL_BIN/xacro"
 
 # Decided now, with the real interpreter and the workspace's PYTHONPATH, so a
 # real smach (or smach_ros) is never shadowed.
