@@ -8,13 +8,15 @@ from exp_assignment2.grammar import show_number
 from exp_assignment2.refusal import RefusalLog
 from exp_assignment2.sim.drives import JointPosition
 from exp_assignment2.sim.plugins.cores import Every
-from exp_assignment2.sim.plugins.ros_io import publish_joint_states
+from exp_assignment2.sim.plugins.ros_io import joint_claims, publish_joint_states
 
 HEAD_SPEED, HEAD_EFFORT = 2.0, 5.0     # rad/s and N m a position controller uses at most
 
 
 class JointStateController(object):
-    """``<ns>/joint_states`` of every movable joint at ``publish_rate`` Hz."""
+    """``<ns>/joint_states`` of every movable joint at ``publish_rate`` Hz,
+    but those another plugin publishes there (:func:`~.ros_io.joint_claims`:
+    the diff drive's wheels with publishWheelJointState)."""
 
     hardware = 'hardware_interface/JointStateInterface'
 
@@ -34,7 +36,10 @@ class JointStateController(object):
 
     def publish(self):
         if self.every.due():
-            publish_joint_states(self.pub, self.model, self.engine)
+            claimed = set().union(*joint_claims(self.engine, self.topic).values())
+            names = [j for j in self.model.movable_joints if j not in claimed]
+            if names:
+                publish_joint_states(self.pub, self.model, self.engine, names)
 
     def reset(self):
         self.every.reset()

@@ -12,7 +12,8 @@ from std_msgs.msg import Header
 from tf2_msgs.msg import TFMessage
 
 from exp_assignment2.sim.plugins.cores import DiffDriveCore, Every, PlanarMoveCore
-from exp_assignment2.sim.plugins.ros_io import CommandTopic, OdometryPublisher, stamp
+from exp_assignment2.sim.plugins.ros_io import (CommandTopic, OdometryPublisher, joint_claims,
+                                                stamp)
 
 
 def yaw_quaternion(yaw):
@@ -34,9 +35,11 @@ class DiffDrivePlugin(DiffDriveCore):
             self.odometry = OdometryPublisher(self.topic(o.text('odometryTopic', 'odom')),
                                               o.text('odometryFrame', 'odom'), base,
                                               tf=o.boolean('publishOdomTF', True))
-        self.wheel_states = (rospy.Publisher(self.topic('joint_states'), JointState,
-                                             queue_size=10)
-                             if o.boolean('publishWheelJointState', False) else None)
+        self.wheel_states = None
+        if o.boolean('publishWheelJointState', False):
+            self.wheel_states = rospy.Publisher(self.topic('joint_states'), JointState,
+                                                queue_size=10)
+            joint_claims(self.engine, self.topic('joint_states'))[self] = set(self.drive.joints)
         self.wheel_tf = (rospy.Publisher('/tf', TFMessage, queue_size=100)
                          if o.boolean('publishWheelTF', False) else None)
         self.cmd = CommandTopic(self, self.topic(o.text('commandTopic', 'cmd_vel')),
@@ -82,6 +85,7 @@ class DiffDrivePlugin(DiffDriveCore):
         for pub in (self.wheel_states, self.wheel_tf):
             if pub is not None:
                 pub.unregister()
+        joint_claims(self.engine, self.topic('joint_states')).pop(self, None)
 
 
 class PlanarMovePlugin(PlanarMoveCore):

@@ -6,7 +6,7 @@ from sensor_msgs.msg import JointState
 
 from exp_assignment2.sim.plugins.base import Plugin, PluginError
 from exp_assignment2.sim.plugins.cores import Every
-from exp_assignment2.sim.plugins.ros_io import publish_joint_states
+from exp_assignment2.sim.plugins.ros_io import joint_claims, publish_joint_states
 
 
 class JointStatePublisherPlugin(Plugin):
@@ -24,6 +24,8 @@ class JointStatePublisherPlugin(Plugin):
         self.every = Every(self.options.number('updateRate', 100.0, minimum=0.0),
                            lambda: self.engine.time)
         self.pub = rospy.Publisher(self.topic('joint_states'), JointState, queue_size=10)
+        joint_claims(self.engine, self.topic('joint_states'))[self] = set(
+            self.joints or self.model.movable_joints)
 
     def after_step(self):
         if self.every.due():
@@ -34,3 +36,4 @@ class JointStatePublisherPlugin(Plugin):
 
     def close(self):
         self.pub.unregister()
+        joint_claims(self.engine, self.topic('joint_states')).pop(self, None)

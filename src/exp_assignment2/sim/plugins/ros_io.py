@@ -110,6 +110,15 @@ class OdometryPublisher(object):
             self.tf_pub.unregister()
 
 
+def joint_claims(engine, topic):
+    """Which joints plugins publish on the JointState ``topic`` themselves
+    ({plugin: joint names}): the joint_state_controller leaves them out, so
+    that no joint comes twice with one stamp (robot_state_publisher's
+    TF_REPEATED_DATA warnings; Gazebo's controller publishes only the joints
+    of transmissions, so the diff drive's wheels never came twice there)."""
+    return engine.shared(('joint_states', topic), dict)
+
+
 def publish_joint_states(pub, model, engine, names=None):
     """``sensor_msgs/JointState`` of ``names`` (every movable joint by default) now."""
     names, positions, velocities, efforts = model.joint_states(names)
