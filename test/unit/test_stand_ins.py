@@ -5,8 +5,9 @@ import pytest
 
 gazebo_msgs = pytest.importorskip('gazebo_msgs.srv', reason='the workspace is not sourced')
 controller_manager_msgs = pytest.importorskip('controller_manager_msgs.srv')
+control_msgs = pytest.importorskip('control_msgs.msg')
 
-# md5sums of ROS 1 Noetic's gazebo_msgs and controller_manager_msgs
+# md5sums of ROS 1 Noetic's gazebo_msgs, controller_manager_msgs and control_msgs
 REAL = {
     'gazebo_msgs/LinkState': '0818ebbf28ce3a08d48ab1eaa7309ebe',
     'gazebo_msgs/LinkStates': '48c080191eb15c41858319b4d8a609c2',
@@ -17,6 +18,12 @@ REAL = {
     'gazebo_msgs/GetModelProperties': '5717f7bd34ed990fa80e28b3015027a3',
     'controller_manager_msgs/SwitchController': 'b29a7abc673b2c54c14b54e50f8d06a5',
     'controller_manager_msgs/ListControllers': '1341feb2e63fa791f855565d0da950d8',
+    'control_msgs/JointControllerState': '987ad85e4756f3aef7f1e5e7fe0595d1',
+    'control_msgs/JointTrajectoryControllerState': '10817c60c2486ef6b33e97dcd87f4474',
+    'control_msgs/PidState': 'b138ec00e886c10e73f27e8712252ea6',
+    'control_msgs/JointJog': '1685da700c8c2e1254afc92a5fb89c96',
+    'control_msgs/PointHeadAction': '7252920f1243de1b741f14f214125371',
+    'control_msgs/SingleJointPositionAction': 'c4a786b7d53e5d0983decf967a5a779e',
 }
 
 

@@ -1,6 +1,9 @@
 """The controllers gazebo_ros_control runs (see :mod:`.ros_control`; their
 manager and its services: :mod:`.controller_manager`)."""
+import math
+
 import rospy
+from control_msgs.msg import JointControllerState
 from sensor_msgs.msg import JointState
 from std_msgs.msg import Float64
 
@@ -8,9 +11,15 @@ from exp_assignment2.grammar import show_number
 from exp_assignment2.refusal import RefusalLog
 from exp_assignment2.sim.drives import JointPosition
 from exp_assignment2.sim.plugins.cores import Every
-from exp_assignment2.sim.plugins.ros_io import joint_claims, publish_joint_states
+from exp_assignment2.sim.plugins.ros_io import joint_claims, publish_joint_states, stamp
 
 HEAD_SPEED, HEAD_EFFORT = 2.0, 5.0     # rad/s and N m a position controller uses at most
+# the controllers ros_controllers runs through a PID, which publish <ns>/<name>/state
+# (the forwarding ones, position_controllers/JointPositionController and
+# velocity_controllers/JointVelocityController, publish none)
+PID_TYPES = ('effort_controllers/JointPositionController',
+             'velocity_controllers/JointPositionController',
+             'effort_controllers/JointVelocityController')
 
 
 class JointStateController(object):
@@ -70,6 +79,9 @@ class JointCommandController(object):
         self.ignored = RefusalLog(self.topic, rospy.logwarn, period=5.0, what='ignored')
         self.clamped = RefusalLog(self.topic, rospy.logwarn, period=5.0, what='clamped')
         self.sub = rospy.Subscriber(self.topic, Float64, self._on_command, queue_size=1)
+        self.state = None
+        if config['type'] in PID_TYPES:
+            self.state = StateTopic(manager, name, config, self.joints[0])
 
     def _on_command(self, msg):
         value = msg.data
@@ -84,20 +96,73 @@ class JointCommandController(object):
         if used != value:
             self.clamped('%s clamped to %s' % (show_number(value), show_number(used)))
 
+    def set_point(self):
+        """What the controller drives the joint to (its position or velocity)."""
+        raise NotImplementedError
+
     def publish(self):
-        pass
+        if self.state is not None:
+            self.state.publish(self.set_point(), self.controls_velocity)
 
     def stop(self):
         self.sub.unregister()
+        if self.state is not None:
+            self.state.stop()
+
+
+class StateTopic(object):
+    """``<ns>/<name>/state`` (control_msgs/JointControllerState) of a PID
+    controller, every update: set point, the joint's position or velocity
+    (``process_value``) and the error between them, the torque the joint's
+    motor applied (``command``), and the gains of the YAML's ``pid``."""
+
+    def __init__(self, manager, name, config, joint):
+        self.manager, self.engine = manager, manager.plugin.engine
+        self.model, self.joint = manager.plugin.model, joint
+        self.continuous = self.model.urdf.joints[joint].type == 'continuous'
+        pid = config.get('pid') if isinstance(config.get('pid'), dict) else {}
+        self.gains = [_gain(pid, key) for key in ('p', 'i', 'd')] + [
+            _gain(pid, 'i_clamp', _gain(pid, 'i_clamp_max'))]
+        self.antiwindup = bool(pid.get('antiwindup', False))
+        self.topic = '%s/%s/state' % (manager.ns, name)
+        self.pub = manager.publisher(self.topic, JointControllerState)
+
+    def publish(self, set_point, of_velocity):
+        _, [position], [velocity], [effort] = self.model.joint_states([self.joint])
+        value = velocity if of_velocity else position
+        error = set_point - value
+        if self.continuous and not of_velocity:
+            error = math.atan2(math.sin(error), math.cos(error))
+        msg = JointControllerState(set_point=set_point, process_value=value,
+                                   process_value_dot=0.0 if of_velocity else velocity,
+                                   error=error, time_step=self.engine.time_step, command=effort,
+                                   antiwindup=self.antiwindup)
+        msg.p, msg.i, msg.d, msg.i_clamp = self.gains
+        msg.header.stamp = stamp(self.engine)
+        self.pub.publish(msg)
+
+    def stop(self):
+        self.manager.release(self.topic)
+
+
+def _gain(pid, key, default=0.0):
+    value = pid.get(key, default)
+    return float(value) if isinstance(value, (int, float)) and not isinstance(value, bool) \
+        else default
 
 
 class PositionController(JointCommandController):
     """A JointPositionController: the command is the joint's target."""
 
+    controls_velocity = False
+
     def __init__(self, manager, name, config):
         JointCommandController.__init__(self, manager, name, config)
         self.drive = JointPosition(self.model, self.joints[0], HEAD_SPEED, HEAD_EFFORT)
         self.command = self.drive.command
+
+    def set_point(self):
+        return self.drive.target
 
     def apply(self):
         self.drive.apply()
@@ -109,6 +174,8 @@ class PositionController(JointCommandController):
 class VelocityController(JointCommandController):
     """A JointVelocityController: the command is the joint's velocity (rad/s)."""
 
+    controls_velocity = True
+
     def __init__(self, manager, name, config):
         JointCommandController.__init__(self, manager, name, config)
         joint = self.model.urdf.joints[self.joints[0]]
@@ -119,6 +186,9 @@ class VelocityController(JointCommandController):
         if not value == value or value in (float('inf'), float('-inf')):
             raise ValueError('joint velocity command %s is not finite' % show_number(value))
         self.velocity = max(-self.limit, min(self.limit, float(value)))
+        return self.velocity
+
+    def set_point(self):
         return self.velocity
 
     def apply(self):
