@@ -86,8 +86,8 @@ def _go_to(words, text, usage, number, kind, check, bounds):
                            % (quote(text), kind, NUMBER_LIMIT, usage))
     x, y = (float(w) if number is _DECIMAL else int(w) for w in words[2:])
     if not check(x, y):
-        raise CommandError('%s: (%s, %s) is outside %s; %s'
-                           % (quote(text), words[2], words[3], bounds, usage))
+        raise CommandError('%s: %s is outside %s; %s'
+                           % (quote(text), show_numbers((x, y)), bounds, usage))
     return x, y
 
 

@@ -98,6 +98,16 @@ def test_non_text_is_rejected(value):
         parse_voice(value)
 
 
+def test_a_point_outside_is_printed_as_every_number_is():
+    """At most 10 significant digits (20 digits were printed in full)."""
+    with pytest.raises(CommandError) as voice:
+        parse_voice('go to 99999999999999999999 1')
+    assert "(1e+20, 1) is outside the grid" in str(voice.value)
+    with pytest.raises(CommandError) as ball:
+        parse_ball_command('go to -0 1000.50')
+    assert "(-0, 1000.5) is outside the arena" in str(ball.value)
+
+
 def test_a_long_input_is_quoted_to_80_characters_with_its_length():
     text = 'x' * 1000000
     with pytest.raises(CommandError) as err:
