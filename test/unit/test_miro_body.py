@@ -3,7 +3,8 @@ grounding node that is slow and answers twice, at 20x real time (a ROS
 master of the test's own, the body in a subprocess that also publishes the
 clock): an order is not sent again before a second of wall time, and an
 order grounded twice waits for the later target, the one the controller
-drives to."""
+drives to; an arrival that comes before its target (MiRo already there)
+counts."""
 import os
 import subprocess
 
@@ -34,12 +35,15 @@ threading.Thread(target=run_clock, daemon=True).start()
 
 targets = rospy.Publisher('/target_pos', Int64MultiArray, queue_size=10)
 arrivals = rospy.Publisher('/arrival', Float64MultiArray, queue_size=10)
-ANSWERS = {'go_home': [(3, 3)], 'go_rand': [(6, 6), (0, 4)]}     # go_rand: grounded twice
+ANSWERS = {'go_home': [(3, 3)], 'go_rand': [(6, 6), (0, 4)],     # go_rand: grounded twice
+           'go to 7 1': [(7, 1)]}
 heard = []
 
 def ground(msg):                  # a grounding node 0.2 s late: 4 s of ROS time
     heard.append(msg.data)
     def answer():
+        if msg.data == 'go to 7 1':     # MiRo is there: the controller answers first
+            arrivals.publish(Float64MultiArray(data=[7, 1, 7.0, 1.0, 3]))
         time.sleep(0.2)
         for xy in ANSWERS[msg.data]:
             out = Int64MultiArray(data=list(xy))
@@ -67,6 +71,9 @@ print('STALE', goal.done(), flush=True)
 arrivals.publish(Float64MultiArray(data=[0, 4, 0.0, 4.0, 2]))
 time.sleep(0.5)
 print('ARRIVED', goal.succeeded(), flush=True)
+goal = body.go('go to 7 1')
+time.sleep(0.5)
+print('EARLY', goal.target, goal.succeeded(), flush=True)
 rospy.signal_shutdown('done')
 '''
 
@@ -77,7 +84,7 @@ def test_a_slow_answer_is_waited_for_and_a_double_one_takes_the_later_target(ros
                           stderr=subprocess.PIPE, universal_newlines=True, timeout=90)
     assert proc.returncode == 0, proc.stderr
     lines = [l for l in proc.stdout.splitlines() if l.split()[0] in
-             ('HOME', 'RAND', 'STALE', 'ARRIVED')]
+             ('HOME', 'RAND', 'STALE', 'ARRIVED', 'EARLY')]
     assert lines == ["HOME ['go_home'] (3, 3)",
                      "RAND ['go_home', 'go_rand'] (0, 4)",
-                     'STALE False', 'ARRIVED True'], proc.stdout + proc.stderr
+                     'STALE False', 'ARRIVED True', 'EARLY (7, 1) True'], proc.stdout + proc.stderr

@@ -33,10 +33,13 @@ class MiroGoal(object):
     """One order: acknowledged by its ``/target_pos``, done at its ``/arrival``
     or when a later order replaces it. An order grounded twice (sent again
     before the first answer came) takes the later target: the controller
-    drives to the newest one."""
+    drives to the newest one. An arrival that comes before the target (the
+    two are on different topics; MiRo already there arrives at once) is kept
+    and counts when its target comes."""
 
     def __init__(self, command):
         self.command, self.target, self.state = command, None, 'sent'
+        self.early = set()      # targets arrived at while this order awaited its target
 
     def done(self):
         return self.state in ('arrived', 'abandoned')
@@ -98,13 +101,17 @@ class RosMiroBody(object):
             goal = self.goal
             if goal is None or goal.done() or label != goal.command:
                 return
-            goal.target, goal.state = tuple(msg.data[:2]), 'moving'
+            goal.target = tuple(msg.data[:2])
+            goal.state = 'arrived' if goal.target in goal.early else 'moving'
         self.clock.notify()
 
     def _on_arrival(self, msg):
+        target = tuple(msg.data[:2])
         with self.lock:
             goal = self.goal
-            if goal is None or goal.state != 'moving' or tuple(msg.data[:2]) != goal.target:
+            if goal is not None and goal.state == 'sent':
+                goal.early.add(target)
+            if goal is None or goal.state != 'moving' or target != goal.target:
                 return
             goal.state = 'arrived'
         self.clock.notify()
