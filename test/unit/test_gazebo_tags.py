@@ -104,6 +104,16 @@ def test_what_gazebo_would_not_understand_is_a_warning_not_a_failure():
     ('<robot name="x"><link name="a"><visual></visual></link></robot>', 'no geometry'),
     ('<robot name="x"><link name="a"/><link name="b"/><joint name="j" type="revolute"><parent '
      'link="a"/><child link="b"/><axis xyz="0 0 0"/></joint></robot>', 'axis is zero'),
+    # sizes pybullet cannot hold (a 1e30 m box threw every body out of the world)
+    ('<robot name="x"><link name="a"><collision><geometry><box size="1e30 1e30 1e30"/>'
+     '</geometry></collision></link></robot>',
+     r'link a collision: <box> size 1e\+30 1e\+30 1e\+30: each must be in \[0, 10000\]'),
+    ('<robot name="x"><link name="a"><visual><geometry><cylinder radius="nan" length="1"/>'
+     '</geometry></visual></link></robot>', r'<cylinder> radius nan: each must be in'),
+    ('<robot name="x"><link name="a"><visual><geometry><sphere radius="-1"/></geometry>'
+     '</visual></link></robot>', r'<sphere> radius -1: each must be in'),
+    ('<robot name="x"><link name="a"><inertial><mass value="-5"/></inertial></link></robot>',
+     'link a: mass -5 is negative'),
 ])
 def test_a_bad_urdf_is_refused_with_the_reason(text, why):
     with pytest.raises(urdf.UrdfError, match=why):

@@ -19,6 +19,10 @@ import numpy as np
 from exp_assignment2.sim import gazebo_tags
 
 DEFAULT_RGBA = (1.0, 1.0, 1.0, 1.0)   # pybullet's colour for a visual without material
+# The largest size (m) and mesh scale a shape may have: Gazebo's ground plane
+# is 100 m, and pybullet's collision detection cannot hold a 1e30 m box (every
+# body near it was thrown out of the world)
+MAX_EXTENT = 1.0e4
 
 Visual = namedtuple('Visual', 'origin kind params rgba')
 Visual.__doc__ = """One ``<visual>`` (or ``<collision>``): 4x4 origin in the link frame,
@@ -156,17 +160,32 @@ def _geometry(elem, where, base_dir):
     kind, a = shape.tag, shape.attrib
     try:
         if kind == 'box':
-            return kind, {'size': floats(a.get('size'), 3, (1, 1, 1), where + ' box size')}
+            size = floats(a.get('size'), 3, (1, 1, 1), where + ' box size')
+            return kind, {'size': _extents(size, where, kind, 'size')}
         if kind in ('cylinder', 'capsule'):
-            return kind, {'radius': float(a['radius']), 'length': float(a['length'])}
+            return kind, {'radius': _extents([float(a['radius'])], where, kind, 'radius')[0],
+                          'length': _extents([float(a['length'])], where, kind, 'length')[0]}
         if kind == 'sphere':
-            return kind, {'radius': float(a['radius'])}
+            return kind, {'radius': _extents([float(a['radius'])], where, kind, 'radius')[0]}
         if kind == 'mesh':
+            scale = floats(a.get('scale'), 3, (1, 1, 1), where + ' scale')
+            _extents([abs(s) for s in scale], where, kind, 'scale')
             return kind, {'filename': resolve_mesh_path(a['filename'], base_dir),
-                          'scale': floats(a.get('scale'), 3, (1, 1, 1), where + ' scale')}
+                          'scale': scale}
     except (KeyError, ValueError) as exc:
+        if isinstance(exc, UrdfError):
+            raise
         raise UrdfError('%s: <%s> %s' % (where, kind, exc))
     return kind, {}    # an unknown shape: kept, not drawn (the renderer says so)
+
+
+def _extents(values, where, kind, name):
+    """``values`` if each is a size pybullet can hold: finite, in [0, MAX_EXTENT]."""
+    if not all(math.isfinite(v) and 0.0 <= v <= MAX_EXTENT for v in values):
+        raise UrdfError('%s: <%s> %s %s: each must be in [0, %g]'
+                        % (where, kind, name, ' '.join('%.10g' % v for v in values),
+                           MAX_EXTENT))
+    return tuple(values)
 
 
 def _materials(root, where):
@@ -199,8 +218,11 @@ def _link(elem, materials, gazebo_colour, base_dir):
             out.append(Visual(origin_matrix(v, where), shape, params, tuple(rgba)))
     inertial = elem.find('inertial')
     mass = inertial.find('mass') if inertial is not None else None
-    return Link(name, visuals, collisions,
-                float(mass.get('value', 0)) if mass is not None else 0.0)
+    value = floats(mass.get('value', '0'), 1, (0.0,), 'link %s mass' % name)[0] \
+        if mass is not None else 0.0
+    if value < 0:
+        raise UrdfError('link %s: mass %.10g is negative' % (name, value))
+    return Link(name, visuals, collisions, value)
 
 
 def _joint(elem):
