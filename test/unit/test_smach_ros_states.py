@@ -17,7 +17,8 @@ pytestmark = pytest.mark.skipif(not os.path.exists(PYTHON), reason='needs Debian
 STUDENT = '''
 import threading
 import actionlib, rospy, smach, smach_ros
-from exp_assignment2.msg import PlanningAction, PlanningFeedback, PlanningGoal, PlanningResult
+from exp_assignment2.msg import (PlanningAction, PlanningActionFeedback, PlanningFeedback,
+                                 PlanningGoal, PlanningResult)
 from std_msgs.msg import Int32
 from std_srvs.srv import SetBool, SetBoolResponse
 
@@ -115,14 +116,20 @@ smach_ros.ActionServerWrapper('/served', PlanningAction, served, succeeded_outco
                               preempted_outcomes=['stopped']).run_server()
 client = actionlib.SimpleActionClient('/served', PlanningAction)
 assert client.wait_for_server(rospy.Duration(30))
+# what the server says, from its topic: a SimpleActionClient drops feedback that
+# comes before send_goal has stored the goal's handle, and LOOK answers at once
 said = []
+heard = rospy.Subscriber('/served/feedback', PlanningActionFeedback,
+                         lambda m: said.append(m.feedback.stat))
+while heard.get_num_connections() < 1:
+    rospy.sleep(0.05)
 goal = PlanningGoal()
 goal.target_pose.pose.position.x = 1.0
 client.send_goal(goal)
 client.wait_for_result(rospy.Duration(30))
 first = client.get_state()
 goal.target_pose.pose.position.x = 0.0            # LOOK -> WAIT: a transition, so feedback
-client.send_goal(goal, feedback_cb=lambda fb: said.append(fb.stat))
+client.send_goal(goal)
 rospy.sleep(1.0)
 client.cancel_goal()
 client.wait_for_result(rospy.Duration(30))
