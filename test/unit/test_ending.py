@@ -107,8 +107,11 @@ def end_while_starting(script, phases, tmp_path, attempts=3):
 def _end_while_starting(script, phases, tmp_path):
     env = dict(os.environ, ROS_MASTER_URI='http://localhost:%d' % free_port(),
                ROS_HOME=str(tmp_path))
+    # SIGINT at its default, as roslaunch starts a node: a test run started in
+    # the background ignores it, and Python then never catches it
     proc = subprocess.Popen([sys.executable, script], stdout=subprocess.PIPE,
-                            stderr=subprocess.STDOUT, env=env, universal_newlines=True)
+                            stderr=subprocess.STDOUT, env=env, universal_newlines=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     try:
         for caught in phases:
             deadline = time.monotonic() + 20.0
