@@ -40,6 +40,7 @@ class MiroGoal(object):
     def __init__(self, command):
         self.command, self.target, self.state = command, None, 'sent'
         self.early = set()      # targets arrived at while this order awaited its target
+        self.grounded = threading.Event()      # its first target came
 
     def done(self):
         return self.state in ('arrived', 'abandoned')
@@ -89,11 +90,7 @@ class RosMiroBody(object):
         sent = time.monotonic()
         if self.clock.wait_until(lambda: goal.target is not None, ACK_TIMEOUT):
             return True
-        while time.monotonic() - sent < ACK_TIMEOUT and not self.clock.is_shutdown():
-            if goal.target is not None:
-                return True
-            time.sleep(0.02)
-        return goal.target is not None
+        return goal.grounded.wait(max(0.0, ACK_TIMEOUT - (time.monotonic() - sent)))
 
     def _on_target(self, msg):
         label = msg.layout.dim[0].label if msg.layout.dim else None
@@ -103,6 +100,7 @@ class RosMiroBody(object):
                 return
             goal.target = tuple(msg.data[:2])
             goal.state = 'arrived' if goal.target in goal.early else 'moving'
+        goal.grounded.set()
         self.clock.notify()
 
     def _on_arrival(self, msg):
