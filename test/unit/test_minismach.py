@@ -5,6 +5,7 @@ import pytest
 
 from exp_assignment2 import minismach as smach
 from exp_assignment2 import smach_api
+from minismach_helpers import Returns
 
 
 class Counter(smach.State):
@@ -17,17 +18,6 @@ class Counter(smach.State):
     def execute(self, ud):
         ud.n = ud.n + 1
         return 'done' if ud.n >= self.limit else 'again'
-
-
-class Returns(smach.State):
-    def __init__(self, outcome, outcomes=('a', 'b')):
-        smach.State.__init__(self, outcomes=list(outcomes))
-        self.outcome = outcome
-        self.runs = 0
-
-    def execute(self, ud):
-        self.runs += 1
-        return self.outcome
 
 
 def test_first_state_added_is_initial_and_transitions_are_followed():

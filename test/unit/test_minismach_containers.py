@@ -5,17 +5,7 @@ import threading
 import pytest
 
 from exp_assignment2 import minismach as smach
-
-
-class Returns(smach.State):
-    def __init__(self, outcome, outcomes=('a', 'b')):
-        smach.State.__init__(self, outcomes=list(outcomes))
-        self.outcome = outcome
-        self.runs = 0
-
-    def execute(self, ud):
-        self.runs += 1
-        return self.outcome
+from minismach_helpers import Returns
 
 
 class Waits(smach.State):
