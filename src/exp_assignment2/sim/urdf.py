@@ -172,9 +172,9 @@ def _geometry(elem, where, base_dir):
             _extents([abs(s) for s in scale], where, kind, 'scale')
             return kind, {'filename': resolve_mesh_path(a['filename'], base_dir),
                           'scale': scale}
+    except UrdfError:
+        raise           # already says where
     except (KeyError, ValueError) as exc:
-        if isinstance(exc, UrdfError):
-            raise
         raise UrdfError('%s: <%s> %s' % (where, kind, exc))
     return kind, {}    # an unknown shape: kept, not drawn (the renderer says so)
 
