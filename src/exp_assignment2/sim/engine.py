@@ -90,6 +90,7 @@ class Engine(object):
         self._warned = set()
         self._hooks = ([], [])          # (before, after) bound methods, rebuilt on change
         self.step_listeners = []        # fn(engine) after every step (the host's clock)
+        self.frame_listeners = []       # fn(camera, t, bgr) for every frame a camera draws
         self.stop = threading.Event()
 
     # time

@@ -106,6 +106,12 @@ class EngineHandle(object):
     def time_step(self):
         return self._engine.time_step
 
+    def frame_drawn(self, camera, when, bgr):
+        """A camera's frame is done (``when``: its simulated time, s): the
+        engine's frame listeners see it (a grader's ground truth)."""
+        for listener in self._engine.frame_listeners:
+            listener(camera, when, bgr)
+
     @property
     def bounds(self):
         """(x_min, x_max, y_min, y_max): no driven body leaves this square."""

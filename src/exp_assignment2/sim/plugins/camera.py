@@ -149,6 +149,7 @@ class CameraPlugin(Plugin):
         if self.raw.wanted:
             self.raw.pub.publish(raw_image(header, bgr, self.spec.encoding))
         self._publish_info(when)
+        self.engine.frame_drawn('%s/%s' % (self.model.name, self.spec.name), when.to_sec(), bgr)
 
     def _publish_info(self, when):
         info = copy.copy(self.info)     # two threads publish it: no shared header

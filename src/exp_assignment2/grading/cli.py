@@ -1,0 +1,213 @@
+"""``bash tools/run grade SUBMISSIONS`` (and ``rosrun exp_assignment2 grade.py``):
+every submission of a folder built, run in its sandbox and judged; one report.
+
+    grade SUBMISSIONS [--out DIR] [--jobs K] [--duration S] [--repeat R]
+          [--profile dog|miro|FILE] [--real-time-factor F] [--seed N]
+          [--only NAME ...] [--report-only]
+"""
+import argparse
+import concurrent.futures
+import multiprocessing
+import os
+import signal
+import sys
+import threading
+import time
+
+from exp_assignment2.grading import profiles, report
+from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, start_for
+from exp_assignment2.grading.progress import Progress
+from exp_assignment2.grading.runner import Run, RunSettings
+from exp_assignment2.grading.submissions import SubmissionError, discover, find_package, \
+    package_name
+
+EXIT_OK, EXIT_USAGE = 0, 2
+
+
+def parse_args(argv):
+    parser = argparse.ArgumentParser(prog='tools/run grade', description=__doc__.split('\n')[0])
+    parser.add_argument('submissions', help='a folder of submissions (directories, .zip, '
+                        '.tar.gz, .tgz), or one package directory')
+    parser.add_argument('--out', help='the report directory (default: ./grading-report)')
+    parser.add_argument('--jobs', type=int, help='runs at once (default: as many as keep '
+                        'every run at real time on this machine)')
+    parser.add_argument('--duration', type=float, help='simulated s a run lasts '
+                        '(default: the profile\'s)')
+    parser.add_argument('--repeat', type=int, default=1, help='runs of each submission, '
+                        'with seeds 1..R (default 1)')
+    parser.add_argument('--seed', type=int, default=1, help='the first run\'s seed')
+    parser.add_argument('--profile', default='dog', help='dog, miro, or a profile file')
+    parser.add_argument('--real-time-factor', type=float, default=1.0,
+                        help='simulated s per wall s (default 1, as the code was written for)')
+    parser.add_argument('--only', nargs='+', metavar='NAME', help='only these submissions')
+    parser.add_argument('--report-only', action='store_true',
+                        help='make the report again from the runs already in --out')
+    args = parser.parse_args(argv)
+    for name in ('jobs', 'repeat'):
+        value = getattr(args, name)
+        if value is not None and not 1 <= value <= 64:
+            parser.error('--%s: %d is not in 1..64' % (name, value))
+    for name in ('duration', 'real_time_factor'):
+        value = getattr(args, name)
+        if value is not None and not (value == value and 0 <= value <= 100000):
+            parser.error('--%s: %r is not a number of seconds or a factor'
+                         % (name.replace('_', '-'), value))
+    if args.duration is not None and args.duration <= 0:
+        parser.error('--duration must be positive')
+    return args
+
+
+def default_jobs(profile):
+    """As many runs as the cores keep at real time (the profile's measured cost)."""
+    return max(1, int(multiprocessing.cpu_count() // float(profile['cpu_per_run'])))
+
+
+def version():
+    import re
+    here = os.path.dirname(os.path.abspath(__file__))
+    path = os.path.join(here, '..', '..', '..', 'package.xml')
+    try:
+        with open(path) as f:
+            return re.search(r'<version>([^<]+)</version>', f.read()).group(1)
+    except (OSError, AttributeError):
+        return 'unknown'
+
+
+def plan_runs(args, profile, out, log):
+    """[Run] for every submission and repeat, in the folder's order."""
+    submissions, notes = discover(args.submissions)
+    for note in notes:
+        log(note)
+    folder = os.path.abspath(args.submissions)
+    teacher_path = os.path.join(folder, 'grading.yaml') if os.path.isdir(folder) else None
+    teacher = read_teacher_file(teacher_path)
+    if teacher.get('profile') and args.profile == 'dog':
+        profile = profiles.load(teacher['profile'])
+    if args.only:
+        unknown = set(args.only) - {s.name for s in submissions}
+        if unknown:
+            raise SubmissionError('--only: no submission named %s (there are: %s)' % (
+                ', '.join(sorted(unknown)), ', '.join(s.name for s in submissions)))
+        submissions = [s for s in submissions if s.name in args.only]
+    hidden = [folder if os.path.isdir(folder) else os.path.dirname(folder), out]
+    settings = RunSettings(profile, os.path.join(out, 'runs'), hidden=hidden,
+                           real_time_factor=teacher.get('real_time_factor',
+                                                        args.real_time_factor),
+                           duration=args.duration or teacher.get('duration'),
+                           version=version(), log=log)
+    if 'delay' in teacher:
+        profile['delay'] = teacher['delay']
+    runs = []
+    for submission in submissions:
+        own = (teacher.get('submissions') or {}).get(submission.name) or {}
+        if own.get('skip'):
+            log('%s: skipped (grading.yaml)' % submission.name)
+            continue
+        start = _start(submission, teacher, profile)
+        for r in range(args.repeat):
+            label = submission.name if args.repeat == 1 else '%s-r%d' % (submission.name, r + 1)
+            runs.append(Run(settings, submission, start, seed=args.seed + r, label=label))
+    return runs, profile
+
+
+def _start(submission, teacher, profile):
+    """The start commands, read from the submission where it is a directory
+    (an archive's README is read once it is unpacked, in the run)."""
+    package_dir = None
+    if submission.kind == 'dir':
+        try:
+            package_dir = find_package(submission.path)
+        except SubmissionError:
+            package_dir = None
+    if package_dir is None:
+        return _Deferred(submission, teacher, profile)
+    return start_for(package_dir, package_name(package_dir), submission.name, teacher,
+                     profile['default_commands'])
+
+
+class _Deferred(object):
+    """Start commands decided once an archive is unpacked (in the run's directory)."""
+
+    def __init__(self, submission, teacher, profile):
+        self.submission, self.teacher, self.profile = submission, teacher, profile
+        self.commands, self.source, self.notes = [], 'the submission\'s README', []
+
+    def resolve(self, package_dir):
+        return start_for(package_dir, package_name(package_dir), self.submission.name,
+                         self.teacher, self.profile['default_commands'])
+
+
+def grade(runs, jobs, progress):
+    """Run every Run, ``jobs`` at once; Ctrl-C ends every run and returns."""
+    stop = threading.Event()
+    for run in runs:
+        run.stop_event = stop
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = {pool.submit(run.go): run for run in runs}
+        try:
+            while True:
+                done = sum(f.done() for f in futures)
+                progress.show(runs)
+                if done == len(futures):
+                    break
+                time.sleep(0.5)
+        except KeyboardInterrupt:
+            stop.set()
+            progress.line('Ctrl-C: ending every run')
+            for future in futures:
+                future.cancel()
+            raise
+        for future in futures:
+            future.result()
+
+
+def main(argv=None):
+    args = parse_args(sys.argv[1:] if argv is None else argv)
+    out = os.path.abspath(args.out or 'grading-report')
+    log = lambda text: print('[grade] ' + text, file=sys.stderr, flush=True)  # noqa: E731
+    try:
+        profile = profiles.load(args.profile)
+        if args.report_only:
+            summaries = report.write(out, profile)
+            log(summary_line(summaries, out))
+            return EXIT_OK
+        folder = os.path.abspath(args.submissions)
+        if out == folder or out.startswith(folder + os.sep):
+            raise SubmissionError('--out %s is inside the submissions folder, which is only '
+                                  'ever read: choose another' % out)
+        runs, profile = plan_runs(args, profile, out, log)
+    except (profiles.ProfileError, TeacherFileError, SubmissionError) as exc:
+        log(str(exc))
+        return EXIT_USAGE
+    if not runs:
+        log('nothing to grade')
+        return EXIT_USAGE
+    os.makedirs(os.path.join(out, 'runs'), exist_ok=True)
+    jobs = args.jobs or default_jobs(profile)
+    log('%d runs of %d submissions, %d at once, %g simulated s each, profile %s; report: %s'
+        % (len(runs), len({r.submission.name for r in runs}), jobs,
+           runs[0].settings.duration, profile['name'], out))
+    progress = Progress(len(runs), jobs)
+    previous = signal.getsignal(signal.SIGTERM)
+    signal.signal(signal.SIGTERM, lambda *_: (_ for _ in ()).throw(KeyboardInterrupt()))
+    try:
+        grade(runs, jobs, progress)
+    except KeyboardInterrupt:
+        log('stopped: the report holds the runs that ended')
+        summaries = report.write(out, profile)
+        return 130
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+        progress.close()
+    summaries = report.write(out, profile)
+    log(summary_line(summaries, out))
+    return EXIT_OK
+
+
+def summary_line(summaries, out):
+    import collections
+    counts = collections.Counter(s['verdict'] for s in summaries.values())
+    from exp_assignment2.grading.verdicts import VERDICTS
+    return 'graded %d submissions: %s; report: %s' % (
+        len(summaries), ', '.join('%d %s' % (counts[v], v) for v in VERDICTS if counts[v]),
+        os.path.join(out, 'index.html'))

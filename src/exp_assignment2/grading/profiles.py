@@ -1,0 +1,95 @@
+"""Assignment profiles: what "works" means, as data (config/grading/*.yaml).
+
+A profile names the world's robot and ball, the default start commands, the
+duration, the limits of a run and its checks (a metric of
+:mod:`exp_assignment2.grading.metrics` with thresholds). ``--profile`` takes a
+profile's name (``dog``, ``miro``) or the path of a teacher's copy.
+"""
+import difflib
+import os
+
+import yaml
+
+from exp_assignment2.grading.metrics import METRICS
+
+PROFILE_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.dirname(os.path.abspath(__file__))))), 'config', 'grading')
+REQUIRED = ('name', 'duration', 'default_commands', 'robot', 'checks')
+KEYS = {'name', 'title', 'duration', 'default_commands', 'delay', 'cpu_per_run',
+        'memory_limit_mb', 'process_limit', 'robot', 'ball', 'camera', 'record_topics',
+        'checks'}
+CHECK_KEYS = {'name', 'metric', 'min', 'max', 'reach', 'joint', 'topic', 'tolerance'}
+DEFAULTS = {'title': '', 'delay': 5, 'cpu_per_run': 1.0, 'memory_limit_mb': 3000,
+            'process_limit': 512, 'ball': None, 'camera': None, 'record_topics': []}
+
+
+class ProfileError(Exception):
+    """One line naming what is wrong in a profile."""
+
+
+def _unknown(key, known, where):
+    close = difflib.get_close_matches(str(key), sorted(known), n=1)
+    return ProfileError('%s: unknown key %r%s' % (where, key,
+                                                   ' (did you mean %r?)' % close[0]
+                                                   if close else ''))
+
+
+def available():
+    return sorted(f[:-5] for f in os.listdir(PROFILE_DIR) if f.endswith('.yaml'))
+
+
+def load(name_or_path):
+    """The profile (a dict with every key), checked; ProfileError saying why not."""
+    path = name_or_path
+    if not os.path.sep in name_or_path and not name_or_path.endswith(('.yaml', '.yml')):
+        path = os.path.join(PROFILE_DIR, name_or_path + '.yaml')
+        if not os.path.isfile(path):
+            raise ProfileError('no profile %r (there are: %s)'
+                               % (name_or_path, ', '.join(available())))
+    try:
+        with open(path) as f:
+            data = yaml.safe_load(f)
+    except OSError as exc:
+        raise ProfileError('%s: %s' % (path, exc.strerror))
+    except yaml.YAMLError as exc:
+        raise ProfileError('%s: not YAML: %s' % (path, str(exc).splitlines()[0]))
+    return check(data, os.path.basename(path))
+
+
+def check(data, where='profile'):
+    if not isinstance(data, dict):
+        raise ProfileError('%s: must be a mapping' % where)
+    for key in data:
+        if key not in KEYS:
+            raise _unknown(key, KEYS, where)
+    for key in REQUIRED:
+        if key not in data:
+            raise ProfileError('%s: %s is missing' % (where, key))
+    profile = dict(DEFAULTS, **data)
+    number = (int, float)
+    for key in ('duration', 'delay', 'cpu_per_run', 'memory_limit_mb', 'process_limit'):
+        if not isinstance(profile[key], number) or isinstance(profile[key], bool) or \
+                not 0 < profile[key] < 1e6:
+            raise ProfileError('%s: %s: %r is not a positive number' % (where, key, profile[key]))
+    if not (isinstance(profile['default_commands'], list) and profile['default_commands']
+            and all(isinstance(c, str) for c in profile['default_commands'])):
+        raise ProfileError('%s: default_commands: a list of command lines' % where)
+    if not isinstance(profile['checks'], list) or not profile['checks']:
+        raise ProfileError('%s: checks: a list of checks' % where)
+    for i, item in enumerate(profile['checks']):
+        here = '%s: checks[%d]' % (where, i)
+        if not isinstance(item, dict):
+            raise ProfileError('%s: must be a mapping' % here)
+        for key in item:
+            if key not in CHECK_KEYS:
+                raise _unknown(key, CHECK_KEYS, here)
+        if item.get('metric') not in METRICS:
+            raise ProfileError('%s: metric %r is not one of %s'
+                               % (here, item.get('metric'), ', '.join(sorted(METRICS))))
+        if 'min' not in item and 'max' not in item:
+            raise ProfileError('%s: give a threshold (min or max)' % here)
+        for key in ('min', 'max', 'reach', 'tolerance'):
+            if key in item and (not isinstance(item[key], number) or isinstance(item[key], bool)):
+                raise ProfileError('%s: %s: %r is not a number' % (here, key, item[key]))
+        item.setdefault('name', item['metric'])
+    return profile

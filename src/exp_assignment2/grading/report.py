@@ -1,0 +1,276 @@
+"""The grading's report, made from the runs' records only (no ROS; ``grade
+--report-only`` makes it again without running anything).
+
+In REPORT_DIR: ``index.html`` (one row per submission, sortable, opens from
+the file system), ``pages/<name>.html`` (the commands, the verdict, the
+arena from above, the head's angle, the frames, the log excerpts, the build
+log), ``report.json`` (everything) and ``grades.csv`` (one line each).
+"""
+import collections
+import csv
+import html
+import json
+import os
+import shutil
+import statistics
+
+from exp_assignment2.grading import figures, metrics
+from exp_assignment2.grading.truth import read_record
+from exp_assignment2.grading.verdicts import VERDICTS, read_log
+
+COLOURS = {'passed': '#2e7d32', 'failed_checks': '#ef6c00', 'crashed': '#c62828',
+           'timed_out': '#6a1b9a', 'not_started': '#ad1457', 'not_built': '#4e342e',
+           'grader_error': '#546e7a'}
+STYLE = '''body{font-family:sans-serif;margin:1.5em;color:#222}
+table{border-collapse:collapse}th,td{border:1px solid #ccc;padding:4px 8px;font-size:13px;
+vertical-align:top}th{background:#eee;cursor:pointer}.v{color:#fff;padding:2px 6px;
+border-radius:3px;white-space:nowrap}pre{background:#f6f6f6;padding:8px;overflow-x:auto;
+font-size:12px;max-height:30em}.fail{color:#c62828}.ok{color:#2e7d32}img{border:1px solid #ddd}
+.frames img{margin-right:6px}.flaky{background:#fff3cd;padding:1px 4px}'''
+SORT_JS = '''function sortBy(th){var t=th.closest('table'),i=[].indexOf.call(th.parentNode.children,th),
+b=t.tBodies[0],rows=[].slice.call(b.rows),asc=th.dataset.asc!=='1';th.dataset.asc=asc?'1':'0';
+rows.sort(function(x,y){var a=x.cells[i].dataset.key||x.cells[i].textContent,
+c=y.cells[i].dataset.key||y.cells[i].textContent,na=parseFloat(a),nc=parseFloat(c);
+var r=(!isNaN(na)&&!isNaN(nc))?na-nc:a.localeCompare(c);return asc?r:-r;});
+rows.forEach(function(r){b.appendChild(r);});}'''
+
+
+def load_runs(runs_dir):
+    """[run result] of every run directory that has a record."""
+    runs = []
+    if not os.path.isdir(runs_dir):
+        return runs
+    for label in sorted(os.listdir(runs_dir)):
+        path = os.path.join(runs_dir, label, 'record', 'run.json')
+        if os.path.exists(path):
+            with open(path) as f:
+                try:
+                    runs.append(json.load(f))
+                except ValueError:
+                    continue
+    return runs
+
+
+def _majority(verdicts):
+    counts = collections.Counter(verdicts)
+    best = max(counts.values())
+    # a tie goes to the worse verdict: a grade should not rest on luck
+    return max((v for v in counts if counts[v] == best), key=VERDICTS.index)
+
+
+def summarise(runs):
+    """{name: submission summary} over the runs of each submission (repeats)."""
+    by_name = collections.OrderedDict()
+    for run in runs:
+        by_name.setdefault(run['name'], []).append(run)
+    out = collections.OrderedDict()
+    for name, group in by_name.items():
+        verdicts = [r['verdict'] for r in group]
+        verdict = _majority(verdicts)
+        checks = []
+        for i, check in enumerate(next((r['checks'] for r in group if r.get('checks')), [])):
+            values = [r['checks'][i]['value'] for r in group
+                      if r.get('checks') and r['checks'][i]['value'] is not None]
+            checks.append(dict(check, value=statistics.median(values) if values else None,
+                               values=values,
+                               passed=sum(r['checks'][i]['passed'] for r in group
+                                          if r.get('checks')) * 2 > len(group)))
+        main = next((r for r in group if r['verdict'] == verdict), group[0])
+        out[name] = {'name': name, 'verdict': verdict, 'flaky': len(set(verdicts)) > 1,
+                     'verdicts': verdicts, 'checks': checks, 'reason': main.get('reason', ''),
+                     'runs': [r['label'] for r in group], 'main_run': main['label'],
+                     'commands': main.get('commands'), 'commands_from': main.get('commands_from'),
+                     'real_time_factor': [r.get('real_time_factor') for r in group],
+                     'slow': any((r.get('real_time_factor') or 1.0) < 0.95 * (
+                         r.get('real_time_factor_asked') or 1.0) for r in group
+                         if r.get('real_time_factor') is not None),
+                     'seeds': [r.get('seed') for r in group]}
+    return out
+
+
+def _e(text):
+    return html.escape(str(text if text is not None else ''))
+
+
+def _figure_value(value):
+    if value is None:
+        return '—'
+    return ('%.3g' % value) if isinstance(value, float) else str(value)
+
+
+def _verdict_badge(verdict):
+    return '<span class="v" style="background:%s">%s</span>' % (COLOURS.get(verdict, '#333'),
+                                                                verdict)
+
+
+def _run_pictures(run, runs_dir, img_dir, profile):
+    """The run's figures and chosen frames, copied next to its page."""
+    record = os.path.join(runs_dir, run['label'], 'record')
+    states, topics, _ = read_record(record)
+    trace = metrics.Trace(states, topics)
+    label = run['label']
+    pictures = {}
+    top = figures.top_view(trace, profile, os.path.join(img_dir, label + '_top.png'))
+    if top:
+        pictures['top'] = top
+    head = figures.head_angle(trace, profile, os.path.join(img_dir, label + '_head.png'),
+                              joint=next((c.get('joint') for c in profile['checks']
+                                          if c.get('joint')), 'head'))
+    if head:
+        pictures['head'] = head
+    frames = {}
+    for moment, source in figures.chosen_frames(record, trace, profile).items():
+        target = os.path.join(img_dir, '%s_%s.jpg' % (label, moment.replace(' ', '_')))
+        shutil.copy(source, target)
+        frames[moment] = target
+    pictures['frames'] = frames
+    thumb_source = frames.get('closest approach') or frames.get('end') or top
+    if thumb_source:
+        thumb = figures.thumbnail(thumb_source, os.path.join(img_dir, label + '_thumb.jpg'))
+        if thumb:
+            pictures['thumb'] = thumb
+    return pictures
+
+
+def _page(summary, runs, runs_dir, pictures, profile):
+    main = next(r for r in runs if r['label'] == summary['main_run'])
+    rel = lambda p: 'img/' + os.path.basename(p)   # noqa: E731
+    parts = ['<!DOCTYPE html><html><head><meta charset="utf-8"><title>%s</title>'
+             '<style>%s</style></head><body>' % (_e(summary['name']), STYLE),
+             '<p><a href="../index.html">&larr; all submissions</a></p>',
+             '<h1>%s %s</h1>' % (_e(summary['name']), _verdict_badge(summary['verdict'])),
+             '<p>%s</p>' % _e(summary['reason'])]
+    if summary['flaky']:
+        parts.append('<p class="flaky">flaky: the repeats ended %s</p>'
+                     % _e(', '.join(summary['verdicts'])))
+    parts.append('<h2>Started with</h2><p>from %s</p><pre>%s</pre>' % (
+        _e(main.get('commands_from')), _e('\n'.join(main.get('commands') or []))))
+    for note in main.get('notes') or []:
+        parts.append('<p>note: %s</p>' % _e(note))
+    if summary['checks']:
+        parts.append('<h2>Checks</h2><table><tr><th>check</th><th>figure</th><th>threshold</th>'
+                     '<th></th><th>detail</th></tr>')
+        for check in summary['checks']:
+            parts.append('<tr><td>%s</td><td>%s</td><td>%s</td><td class="%s">%s</td>'
+                         '<td>%s</td></tr>' % (
+                             _e(check['name']), _e(_figure_value(check['value'])),
+                             _e(check['threshold']), 'ok' if check['passed'] else 'fail',
+                             'passed' if check['passed'] else 'failed', _e(check['detail'])))
+        parts.append('</table>')
+    if pictures.get('top') or pictures.get('head'):
+        parts.append('<h2>What happened</h2><p>')
+        for key in ('top', 'head'):
+            if pictures.get(key):
+                parts.append('<img src="%s" alt="%s">' % (rel(pictures[key]), key))
+        parts.append('</p>')
+    if pictures.get('frames'):
+        parts.append('<h2>Camera</h2><div class="frames">')
+        for moment, path in pictures['frames'].items():
+            parts.append('<figure style="display:inline-block"><img src="%s" alt="%s">'
+                         '<figcaption>%s</figcaption></figure>' % (rel(path), _e(moment),
+                                                                   _e(moment)))
+        parts.append('</div>')
+    parts.append('<h2>Runs</h2><table><tr><th>run</th><th>seed</th><th>verdict</th>'
+                 '<th>simulated s</th><th>real-time factor</th><th>wall s</th>'
+                 '<th>peak memory MB</th><th>to repeat it by hand</th></tr>')
+    for run in runs:
+        truth = run.get('truth') or {}
+        rtf = run.get('real_time_factor')
+        parts.append('<tr><td>%s</td><td>%s</td><td>%s</td><td>%.1f</td><td>%s%s</td>'
+                     '<td>%.0f</td><td>%.0f</td><td><code>%s</code></td></tr>' % (
+                         _e(run['label']), _e(run.get('seed')), _verdict_badge(run['verdict']),
+                         truth.get('sim_time', 0.0), '%.2f' % rtf if rtf else '—',
+                         ' (below 0.95: starved)' if rtf and rtf < 0.95 * (
+                             run.get('real_time_factor_asked') or 1) else '',
+                         run.get('wall_time', 0.0), run.get('peak_memory_mb') or 0,
+                         _e(run.get('repeat_command'))))
+    parts.append('</table>')
+    errors = main.get('errors') or []
+    died = main.get('died') or []
+    if died:
+        parts.append('<h2>Nodes that died</h2><ul>%s</ul>' % ''.join(
+            '<li>%s: exit code %s (%s)</li>' % (_e(d['node']), _e(d['code']), _e(d['log']))
+            for d in died))
+    if errors:
+        parts.append('<h2>Errors (%d)</h2>' % main.get('error_count', len(errors)))
+        for error in errors[:10]:
+            parts.append('<p>%s, line %s</p><pre>%s</pre>' % (_e(error['source']),
+                                                             _e(error['line']),
+                                                             _e(error['excerpt'])))
+    work = os.path.join(runs_dir, main['label'], 'work')
+    if main['verdict'] in ('not_built', 'grader_error', 'not_started'):
+        for name in ('build.log',) + tuple('command-%d.log' % i
+                                           for i in range(len(main.get('commands') or []))):
+            text = read_log(work, os.path.join('logs', name), {})
+            if text:
+                parts.append('<h2>%s</h2><pre>%s</pre>' % (_e(name), _e(text[-20000:])))
+    parts.append('<p>Records: <code>%s</code></p></body></html>'
+                 % _e(os.path.join(runs_dir, main['label'])))
+    return ''.join(parts)
+
+
+def _index(summaries, pictures, profile, title):
+    check_names = [c['name'] for c in profile['checks']]
+    counts = collections.Counter(s['verdict'] for s in summaries.values())
+    parts = ['<!DOCTYPE html><html><head><meta charset="utf-8"><title>%s</title>'
+             '<style>%s</style><script>%s</script></head><body>' % (_e(title), STYLE, SORT_JS),
+             '<h1>%s</h1><p>%d submissions: %s. Click a heading to sort.</p>' % (
+                 _e(title), len(summaries),
+                 ', '.join('%d %s' % (counts[v], v) for v in VERDICTS if counts[v])),
+             '<table><thead><tr><th onclick="sortBy(this)">submission</th>'
+             '<th onclick="sortBy(this)">verdict</th>']
+    parts += ['<th onclick="sortBy(this)">%s</th>' % _e(n) for n in check_names]
+    parts.append('<th onclick="sortBy(this)">first error</th><th>picture</th></tr></thead><tbody>')
+    for name, s in summaries.items():
+        values = {c['name']: c for c in s['checks']}
+        parts.append('<tr><td><a href="pages/%s.html">%s</a></td><td data-key="%d">%s%s</td>' % (
+            _e(name), _e(name), VERDICTS.index(s['verdict']), _verdict_badge(s['verdict']),
+            ' <span class="flaky">flaky</span>' if s['flaky'] else ''))
+        for check_name in check_names:
+            check = values.get(check_name)
+            if check is None:
+                parts.append('<td data-key="-1">—</td>')
+            else:
+                parts.append('<td class="%s" data-key="%s">%s</td>' % (
+                    'ok' if check['passed'] else 'fail',
+                    check['value'] if check['value'] is not None else -1,
+                    _e(_figure_value(check['value']))))
+        parts.append('<td>%s</td>' % _e(s['reason'][:160]))
+        thumb = pictures.get(name, {}).get('thumb')
+        parts.append('<td>%s</td></tr>' % ('<img src="pages/img/%s" alt="%s">' % (
+            os.path.basename(thumb), _e(name)) if thumb else ''))
+    parts.append('</tbody></table></body></html>')
+    return ''.join(parts)
+
+
+def write(report_dir, profile, title=None):
+    """Make the report from ``report_dir/runs``; returns the summaries."""
+    runs_dir = os.path.join(report_dir, 'runs')
+    runs = load_runs(runs_dir)
+    summaries = summarise(runs)
+    pages = os.path.join(report_dir, 'pages')
+    img_dir = os.path.join(pages, 'img')
+    shutil.rmtree(pages, ignore_errors=True)
+    os.makedirs(img_dir)
+    pictures = {}
+    for name, summary in summaries.items():
+        group = [r for r in runs if r['name'] == name]
+        main = next(r for r in group if r['label'] == summary['main_run'])
+        pictures[name] = _run_pictures(main, runs_dir, img_dir, profile)
+        with open(os.path.join(pages, name + '.html'), 'w') as f:
+            f.write(_page(summary, group, runs_dir, pictures[name], profile))
+    title = title or 'Grading: %s' % (profile.get('title') or profile['name'])
+    with open(os.path.join(report_dir, 'index.html'), 'w') as f:
+        f.write(_index(summaries, pictures, profile, title))
+    with open(os.path.join(report_dir, 'report.json'), 'w') as f:
+        json.dump({'profile': profile, 'submissions': list(summaries.values()), 'runs': runs},
+                  f, indent=1, default=str)
+    with open(os.path.join(report_dir, 'grades.csv'), 'w', newline='') as f:
+        writer = csv.writer(f)
+        names = [c['name'] for c in profile['checks']]
+        writer.writerow(['submission', 'verdict', 'flaky'] + names + ['reason'])
+        for s in summaries.values():
+            values = {c['name']: c['value'] for c in s['checks']}
+            writer.writerow([s['name'], s['verdict'], int(s['flaky'])] +
+                            [values.get(n, '') for n in names] + [s['reason']])
+    return summaries

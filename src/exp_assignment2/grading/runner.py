@@ -1,0 +1,312 @@
+"""One run of one submission, from its files to its record (no ROS).
+
+A run's directory (``RUNS/<name>[-rN]/``) holds ``work/`` (the only place
+the sandbox may write: the unpacked submission, its build, its logs, its
+``ROS_HOME``) and ``record/`` (the grader's: the ground truth, the driver's
+events, the frames, ``run.json``). The sandbox never sees ``record/``: the
+simulator's socket is in ``sockets/``, shown to it read-only.
+"""
+import json
+import os
+import re
+import shutil
+import subprocess
+import threading
+import time
+
+from exp_assignment2.grading import verdicts
+from exp_assignment2.grading.sandbox import Sandbox, SandboxError
+from exp_assignment2.grading.submissions import SubmissionError, package_name, unpack
+from exp_assignment2.grading.truth import TruthServer
+from exp_assignment2.sim.ground_truth import SOCKET_ENV, TOPICS_ENV
+
+# the repository itself (the workspace links to it)
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.realpath(__file__)))))
+SHELL = os.path.join(REPO, 'tools', 'original_env', 'shell.sh')
+INSIDE = os.path.join(REPO, 'src', 'exp_assignment2', 'grading', 'inside.py')
+BUILD_LIMIT = 900.0          # wall s for a build
+START_SLACK = 120.0          # wall s on top of the duration: set-up, starting, ending
+WORK_LIMIT = 2 * 1024 ** 3   # bytes the work directory may hold
+WALL_CLOCK = re.compile(r'\btime\.(sleep|time)\s*\(|\brospy\.Rate\b.*\bwall\b')
+# the environment a run starts with (the sandbox's is cleared)
+PASSED_ENV = ('PATH', 'LANG', 'LC_ALL', 'EXP2_WS', 'EXP2_TEST_JOBS')
+
+
+def waits_on_wall_clock(package_dir):
+    """[(file, line)] where the package's Python waits on or reads the wall clock."""
+    found = []
+    for root, dirs, files in os.walk(package_dir):
+        dirs[:] = [d for d in dirs if not d.startswith('.') and d not in ('build', 'devel')]
+        for name in files:
+            path = os.path.join(root, name)
+            if not name.endswith('.py') and not is_python_script(path):
+                continue
+            try:
+                with open(path, errors='replace') as f:
+                    for number, line in enumerate(f, 1):
+                        if WALL_CLOCK.search(line.split('#')[0]):
+                            found.append((os.path.relpath(path, package_dir), number))
+            except OSError:
+                continue
+    return found
+
+
+def is_python_script(path):
+    try:
+        with open(path, 'rb') as f:
+            first = f.readline(200)
+    except OSError:
+        return False
+    return first.startswith(b'#!') and b'python' in first
+
+
+class RunSettings(object):
+    """What every run of a grading shares."""
+
+    def __init__(self, profile, runs_dir, hidden=(), workspace=None,
+                 real_time_factor=1.0, duration=None, version='', log=print):
+        self.profile, self.runs_dir = profile, os.path.abspath(runs_dir)
+        self.hidden = [os.path.abspath(h) for h in hidden]
+        self.workspace = workspace or os.environ.get('EXP2_WS') or os.path.expanduser(
+            '~/.cache/exp_assignment2_ws')
+        self.real_time_factor = float(real_time_factor)
+        self.duration = float(duration or profile['duration'])
+        self.version, self.log = version, log
+
+
+class Run(object):
+    """One run: ``go()`` does it and returns its result (also in run.json)."""
+
+    def __init__(self, settings, submission, start, seed=1, label=None, stop_event=None):
+        self.settings, self.submission, self.start = settings, submission, start
+        self.seed, self.label = seed, label or submission.name
+        self.dir = os.path.join(settings.runs_dir, self.label)
+        self.work = os.path.join(self.dir, 'work')
+        self.record = os.path.join(self.dir, 'record')
+        self.sockets = os.path.join(self.dir, 'sockets')
+        self.stop_event = stop_event or threading.Event()
+        self.events, self.state = [], 'waiting'
+        self.result = None
+
+    # the run's files
+    def _fresh_dirs(self):
+        shutil.rmtree(self.dir, ignore_errors=True)
+        for path in (self.work, self.record, self.sockets,
+                     os.path.join(self.work, 'home'), os.path.join(self.work, 'ros_home'),
+                     os.path.join(self.work, 'original_env_bin')):
+            os.makedirs(path, exist_ok=True)
+        os.chmod(self.sockets, 0o755)
+
+    def _plan(self, package_dir, start):
+        plan = {'shell': SHELL, 'package': package_dir, 'commands': start.commands,
+                'delay': float(self.settings.profile['delay']),
+                'logs': os.path.join(self.work, 'logs')}
+        path = os.path.join(self.work, 'plan.json')
+        with open(path, 'w') as f:
+            json.dump(plan, f, indent=1)
+        return path
+
+    def _sandbox(self, real_time_factor):
+        s, profile = self.settings, self.settings.profile
+        ws = s.workspace
+        env = {key: os.environ[key] for key in PASSED_ENV if key in os.environ}
+        env.update({
+            'HOME': os.path.join(self.work, 'home'), 'ROS_HOME': os.path.join(self.work, 'ros_home'),
+            'ROS_MASTER_URI': 'http://localhost:11311', 'ROS_HOSTNAME': 'localhost',
+            'TMPDIR': '/tmp', 'EXP2_WS': ws, 'EXP2_OVERLAY_ROOT': os.path.join(self.work, 'overlay'),
+            'CCACHE_DISABLE': '1', 'PYTHONHASHSEED': str(self.seed), 'EXP2_SEED': str(self.seed),
+            'PYTHONUNBUFFERED': '1', 'PYTHONDONTWRITEBYTECODE': '1',
+            SOCKET_ENV: os.path.join(self.sockets, 'truth.sock'),
+            TOPICS_ENV: ','.join(profile.get('record_topics') or []),
+            'EXP2_REAL_TIME_FACTOR': '%g' % real_time_factor,
+        })
+        env['PATH'] = '/usr/bin:/bin:/usr/sbin:/sbin'
+        # the original-code shell writes its python launchers into the workspace:
+        # a directory of the run's own is shown there (made once, outside, as
+        # the mount's target)
+        bin_dir = os.path.join(ws, 'original_env_bin')
+        os.makedirs(bin_dir, exist_ok=True)
+        return Sandbox(self.label, self.work, hidden=s.hidden + [os.path.expanduser('~')],
+                       readonly=[ws, REPO], sockets=self.sockets,
+                       binds=[(os.path.join(self.work, 'original_env_bin'), bin_dir)],
+                       memory_mb=profile['memory_limit_mb'],
+                       processes=profile['process_limit'], env=env)
+
+    def go(self):
+        started = time.time()
+        self._fresh_dirs()
+        result = {'name': self.submission.name, 'label': self.label, 'seed': self.seed,
+                  'version': self.settings.version, 'profile': self.settings.profile['name'],
+                  'started': started, 'commands': self.start.commands,
+                  'commands_from': self.start.source, 'notes': list(self.start.notes)}
+        try:
+            package_dir = unpack(self.submission, os.path.join(self.work, 'src'))
+        except SubmissionError as exc:
+            result.update(verdict='not_built', reason='the submission: %s' % exc)
+            return self._finish(result)
+        result['package'] = package_name(package_dir)
+        if hasattr(self.start, 'resolve'):       # an archive's README, now unpacked
+            self.start = self.start.resolve(package_dir)
+        result.update(commands=self.start.commands, commands_from=self.start.source,
+                      notes=list(self.start.notes))
+        rtf = self.settings.real_time_factor
+        if rtf != 1.0:
+            wall = waits_on_wall_clock(package_dir)
+            if wall:
+                result['notes'].append(
+                    'run at real time, not %gx: the code waits on the wall clock (%s)'
+                    % (rtf, ', '.join('%s:%d' % w for w in wall[:3])))
+                rtf = 1.0
+        result['real_time_factor_asked'] = rtf
+        result['repeat_command'] = self.repeat_command()
+        try:
+            box = self._sandbox(rtf)
+            result['limits'] = box.groups.notes or ['memory %d MB, %d processes' % (
+                self.settings.profile['memory_limit_mb'], self.settings.profile['process_limit'])]
+            truth = TruthServer(os.path.join(self.sockets, 'truth.sock'), self.record)
+            self._monitor(box, truth, self._plan(package_dir, self.start), rtf, result)
+        except SandboxError as exc:
+            result.update(verdict='grader_error', reason=str(exc))
+        return self._finish(result)
+
+    def repeat_command(self):
+        return 'bash tools/run grade %s --profile %s --seed %d --duration %g%s' % (
+            self.submission.path, self.settings.profile['name'], self.seed,
+            self.settings.duration, ' --real-time-factor %g' % self.settings.real_time_factor
+            if self.settings.real_time_factor != 1.0 else '')
+
+    def _monitor(self, box, truth, plan, rtf, result):
+        """Start the driver in the sandbox and watch until the run is over."""
+        events_path = os.path.join(self.record, 'events.jsonl')
+        proc = box.start(['/usr/bin/python3', INSIDE, plan], stdout=subprocess.PIPE)
+        events = self.events
+        reader = threading.Thread(target=self._read_events, args=(proc, events, events_path),
+                                  daemon=True)
+        reader.start()
+        duration = self.settings.duration
+        wall_limit = duration / (rtf if rtf > 0 else 1.0) * 1.5 + START_SLACK
+        t0 = time.monotonic()
+        run_start = None
+        ending = None
+        self.state = 'building'
+        last_size_check = 0.0
+        while proc.poll() is None:
+            time.sleep(0.25)
+            now = time.monotonic()
+            kinds = [e.get('event') for e in events]
+            if 'built' in kinds and run_start is None:
+                run_start = now
+                self.state = 'running'
+                built = [e for e in events if e.get('event') == 'built'][0]
+                if built.get('rc') != 0:
+                    break
+            if ending:
+                if now - ending[1] > 40:        # the driver did not end its commands
+                    break
+                continue
+            reason = None
+            if self.stop_event.is_set():
+                reason = 'cancelled'
+            elif run_start is None and now - t0 > BUILD_LIMIT:
+                reason = 'build_limit'
+            elif truth.latest and truth.latest[0] >= duration:
+                reason = 'duration'
+            elif run_start is not None and now - run_start > wall_limit:
+                reason = 'wall_limit'
+            elif run_start is not None and self._all_exited(events) and (
+                    truth.latest is None or now - truth.latest[1] > 10):
+                reason = 'all_exited'
+            elif run_start is not None and truth.latest is None and \
+                    now - run_start > 90 + len(self.start.commands) * self.settings.profile['delay']:
+                reason = 'no_simulator'
+            elif now - last_size_check > 5:
+                last_size_check = now
+                if directory_size(self.work) > WORK_LIMIT:
+                    reason = 'disk_limit'
+            if reason:
+                ending = (reason, now)
+                result['ended_by'] = reason
+                result['log_sizes'] = log_sizes(self.work)
+                self.state = 'ending'
+                try:
+                    proc.stdin.write('stop\n')
+                    proc.stdin.flush()
+                except (OSError, ValueError):
+                    pass
+        result.setdefault('ended_by', 'driver_exit')
+        result.setdefault('log_sizes', log_sizes(self.work))
+        result['all_gone'] = box.kill()
+        result['peak_memory_mb'] = (box.groups.peak_memory() or 0) / 2 ** 20
+        result['oom'] = box.groups.oom_killed()
+        if result['all_gone']:
+            box.groups.remove()
+        reader.join(2.0)
+        truth.close()
+        result['truth'] = {'states': truth.states, 'frames': truth.frames,
+                           'topics': truth.topics, 'dropped': truth.dropped,
+                           'simulator': truth.simulator and truth.simulator[1],
+                           'refused_peers': truth.refused,
+                           'sim_time': truth.latest[0] if truth.latest else 0.0}
+        result['real_time_factor'] = truth.real_time_factor()
+        result['wall_time'] = time.monotonic() - t0
+        result['sandbox_exit'] = proc.returncode
+        result['events'] = events
+
+    @staticmethod
+    def _all_exited(events):
+        started = {e['index'] for e in events if e.get('event') == 'started'}
+        exited = {e['index'] for e in events if e.get('event') == 'exited'}
+        return bool(started) and started <= exited
+
+    @staticmethod
+    def _read_events(proc, events, path):
+        with open(path, 'w') as out:
+            for line in proc.stdout:
+                out.write(line)
+                if len(events) > 10000:
+                    continue
+                try:
+                    event = json.loads(line)
+                except ValueError:
+                    event = {'event': 'output', 'text': line.rstrip()[:500]}
+                if isinstance(event, dict):
+                    events.append(event)
+
+    def _finish(self, result):
+        if 'verdict' not in result:
+            result.update(verdicts.judge(self.work, self.record, result, self.settings.profile))
+        result['finished'] = time.time()
+        self.state = 'done'
+        with open(os.path.join(self.record, 'run.json'), 'w') as f:
+            json.dump(result, f, indent=1, default=str)
+        self.result = result
+        return result
+
+
+def directory_size(path):
+    total = 0
+    for root, _dirs, files in os.walk(path):
+        for name in files:
+            try:
+                total += os.lstat(os.path.join(root, name)).st_size
+            except OSError:
+                pass
+    return total
+
+
+def log_sizes(work):
+    """{log path: size} now: what is read of the logs is what was written up to
+    the end of the run (a node's last words at shutdown are not its crash)."""
+    sizes = {}
+    for root, _dirs, files in os.walk(work):
+        if '/src' in root[len(work):][:4] or '/overlay' in root[len(work):][:8]:
+            continue
+        for name in files:
+            if name.endswith('.log'):
+                path = os.path.join(root, name)
+                try:
+                    sizes[os.path.relpath(path, work)] = os.path.getsize(path)
+                except OSError:
+                    pass
+    return sizes

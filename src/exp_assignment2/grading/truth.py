@@ -1,0 +1,169 @@
+"""The grader's end of the ground truth (no ROS): a Unix socket outside the
+sandbox, where the simulator streams what happens
+(:mod:`exp_assignment2.sim.ground_truth`).
+
+Only the first connection from a simulator process is taken: the peer's
+process (its credentials, seen from outside the sandbox's namespaces) must
+run this package's simulator, or the connection is refused and counted.
+What arrives is written as it arrives to the run's record, outside every
+directory the sandbox can write: states and topics to ``truth.jsonl``,
+frames to ``frames/`` as JPEG files.
+"""
+import base64
+import json
+import os
+import socket
+import struct
+import threading
+import time
+
+MAX_LINE = 8 * 1024 * 1024
+SIMULATOR_MARKS = ('scripts/simulator.py', '/gzserver', 'exp_assignment2.nodes.simulator')
+
+
+def peer_command(conn):
+    """The command line of the process at the other end of a Unix socket."""
+    creds = conn.getsockopt(socket.SOL_SOCKET, socket.SO_PEERCRED, struct.calcsize('3i'))
+    pid = struct.unpack('3i', creds)[0]
+    try:
+        with open('/proc/%d/cmdline' % pid, 'rb') as f:
+            return pid, f.read().replace(b'\0', b' ').decode(errors='replace').strip()
+    except OSError:
+        return pid, ''
+
+
+class TruthServer(object):
+    """Listens on ``path``; records into ``record_dir``. ``latest`` is the
+    last simulated time heard and the monotonic wall time it came at."""
+
+    def __init__(self, path, record_dir, accept=None):
+        self.path, self.record_dir = path, record_dir
+        self.accept_peer = accept or (lambda command: any(m in command
+                                                          for m in SIMULATOR_MARKS))
+        os.makedirs(os.path.join(record_dir, 'frames'), exist_ok=True)
+        if os.path.exists(path):
+            os.unlink(path)
+        self.sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        self.sock.bind(path)
+        os.chmod(path, 0o777)       # the sandbox's user is not the grader's
+        self.sock.listen(8)
+        self.sock.settimeout(0.5)
+        self.connected = threading.Event()
+        self.simulator = None        # (pid, command line) of the accepted peer
+        self.refused = []            # command lines of the refused peers
+        self.first = self.latest = None        # (sim t, monotonic wall)
+        self.states = self.frames = self.topics = self.dropped = 0
+        self.closed = threading.Event()
+        self._out = open(os.path.join(record_dir, 'truth.jsonl'), 'w')
+        self._thread = threading.Thread(target=self._serve, name='truth', daemon=True)
+        self._thread.start()
+
+    def _serve(self):
+        while not self.closed.is_set():
+            try:
+                conn, _ = self.sock.accept()
+            except socket.timeout:
+                continue
+            except OSError:
+                break
+            pid, command = peer_command(conn)
+            if self.simulator is not None or not self.accept_peer(command):
+                self.refused.append(command or 'pid %d' % pid)
+                conn.close()
+                continue
+            self.simulator = (pid, command)
+            self.connected.set()
+            threading.Thread(target=self._read, args=(conn,), name='truth-read',
+                             daemon=True).start()
+
+    def _read(self, conn):
+        conn.settimeout(0.5)
+        buffer = b''
+        with conn:
+            while not self.closed.is_set():
+                try:
+                    chunk = conn.recv(1 << 16)
+                except socket.timeout:
+                    continue
+                except OSError:
+                    break
+                if not chunk:
+                    break
+                buffer += chunk
+                while b'\n' in buffer:
+                    line, buffer = buffer.split(b'\n', 1)
+                    self._record(line)
+                if len(buffer) > MAX_LINE:
+                    buffer = b''
+        self.ended = True
+
+    def _record(self, line):
+        try:
+            record = json.loads(line)
+        except ValueError:
+            return
+        if not isinstance(record, dict):
+            return
+        self.dropped += int(record.get('dropped_before') or 0)
+        kind = record.get('kind')
+        t = record.get('t')
+        if isinstance(t, (int, float)):
+            now = (float(t), time.monotonic())
+            self.latest = now
+            if self.first is None:
+                self.first = now
+        if kind == 'frame':
+            try:
+                data = base64.b64decode(record.get('jpeg', ''))
+            except ValueError:
+                return
+            camera = str(record.get('camera', 'camera')).replace('/', '_')
+            name = '%s_%08.2f.jpg' % (camera, float(t or 0))
+            with open(os.path.join(self.record_dir, 'frames', name), 'wb') as f:
+                f.write(data)
+            self.frames += 1
+            return
+        if kind == 'state':
+            self.states += 1
+        elif kind == 'topic':
+            self.topics += 1
+        self._out.write(line.decode(errors='replace') + '\n')
+
+    def real_time_factor(self):
+        if self.first is None or self.latest is None or self.latest[1] <= self.first[1]:
+            return None
+        return (self.latest[0] - self.first[0]) / (self.latest[1] - self.first[1])
+
+    def close(self):
+        self.closed.set()
+        self._thread.join(2.0)
+        time.sleep(0.6)       # the reader notices, writes its last line
+        self.sock.close()
+        self._out.close()
+        try:
+            os.unlink(self.path)
+        except OSError:
+            pass
+
+
+def read_record(record_dir):
+    """(states, topics, hello) of a run's truth.jsonl."""
+    states, topics, hello = [], [], None
+    path = os.path.join(record_dir, 'truth.jsonl')
+    if not os.path.exists(path):
+        return states, topics, hello
+    with open(path, errors='replace') as f:
+        for line in f:
+            try:
+                record = json.loads(line)
+            except ValueError:
+                continue
+            kind = record.get('kind')
+            if kind == 'state' and isinstance(record.get('models'), dict):
+                record.setdefault('joints', {})
+                states.append(record)
+            elif kind == 'topic':
+                topics.append((record.get('t', 0.0), record.get('topic'), record.get('msg')))
+            elif kind == 'hello':
+                hello = record
+    return states, topics, hello

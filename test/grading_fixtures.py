@@ -1,0 +1,183 @@
+"""The grader's fixture folder: submissions written here, one per way a
+submission can end (test/fixtures/grading/base is the dog that works; the
+others are it with one thing changed). ``make_folder(dest)`` writes them.
+
+    /usr/bin/python3 test/grading_fixtures.py DEST    (for bench/ and by hand)
+"""
+import os
+import re
+import shutil
+import sys
+import tarfile
+import zipfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+BASE = os.path.join(HERE, 'fixtures', 'grading', 'base')
+STUDENT = os.path.join(HERE, 'fixtures', 'student_pkg')    # its robot and controllers
+DOG = os.path.join('scripts', 'dog.py')
+
+# name -> expected verdict
+EXPECTED = {'works': 'passed', 'tabs': 'passed', 'cpp_broken': 'not_built',
+            'raises': 'crashed', 'idle': 'failed_checks', 'hostile': None,
+            'zipped': 'passed', 'tarred': 'passed'}
+
+RAISES = '''#!/usr/bin/env python3
+import rospy
+rospy.init_node('dog')
+raise RuntimeError('the dog has no legs')
+'''
+
+IDLE = '''#!/usr/bin/env python3
+import rospy
+rospy.init_node('dog')
+rospy.spin()
+'''
+
+BROKEN_CPP = '''#include <ros/ros.h>
+int main(int argc, char **argv) {
+  ros::init(argc, argv, "counter")
+  return 0;
+}
+'''
+
+# Every escape the sandbox must stop; each is tried, and what happened is
+# printed. It then never exits, whatever signal it gets.
+HOSTILE = r'''#!/usr/bin/env python3
+import glob, os, signal, subprocess, sys, time
+import rospy
+rospy.init_node('dog')
+here = os.path.abspath(os.path.dirname(__file__))
+def attempt(what, fn):
+    try:
+        fn()
+        print('ESCAPE-OK', what, flush=True)
+    except BaseException as exc:
+        print('ESCAPE-REFUSED', what, type(exc).__name__, flush=True)
+def write_out():
+    for path in [os.environ.get('EXP2_HOSTILE_TARGET', '/tmp/x'), '/root/hostile',
+                 '/etc/hostile', os.path.join(here, '..', '..', '..', '..', 'hostile')]:
+        try:
+            with open(path, 'w') as f:
+                f.write('hostile')
+        except OSError:
+            pass
+    outside = os.environ.get('EXP2_HOSTILE_TARGET')
+    if outside and os.path.exists(outside):
+        raise SystemExit('wrote')
+def read_others():
+    found = glob.glob('/' + '/'.join(['*'] * 4) + '/work/src/*/package.xml')
+    mine = [f for f in found if not f.startswith(os.path.dirname(os.path.dirname(here)))]
+    print('OTHERS', mine, flush=True)
+attempt('write outside', write_out)
+attempt('read others', read_others)
+attempt('pkill', lambda: subprocess.run(['pkill', '-f', 'roslaunch'], timeout=5))
+attempt('killall', lambda: subprocess.run(['killall', 'python3'], timeout=5))
+attempt('kill -1', lambda: os.kill(-1, signal.SIGKILL) if os.fork() == 0 else None)
+for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+    signal.signal(sig, signal.SIG_IGN)
+if os.fork() == 0:
+    children = []
+    for _ in range(5000):      # forks until the run's process limit says no
+        try:
+            pid = os.fork()
+        except OSError:
+            break
+        if pid == 0:
+            time.sleep(3600)
+            os._exit(0)
+        children.append(pid)
+    print('FORKED', len(children), flush=True)
+    time.sleep(3600)
+    os._exit(0)
+line = 'x' * 1023 + '\n'
+try:
+    for _ in range(1 << 20):      # a gigabyte of log
+        sys.stdout.write(line)
+except BaseException as exc:
+    print('LOG-STOPPED', type(exc).__name__, flush=True)
+hog = []
+while True:                  # the memory, then forever
+    try:
+        hog.append(bytearray(50 * 1024 * 1024))
+    except MemoryError:
+        time.sleep(1)
+'''
+
+
+def _package(dest):
+    """The dog that works: the base fixture with the student fixture's robot."""
+    shutil.copytree(BASE, dest)
+    os.makedirs(os.path.join(dest, 'config'))
+    for rel in ('urdf/robot.xacro', 'urdf/robot.gazebo', 'config/motors_config.yaml'):
+        shutil.copy(os.path.join(STUDENT, rel), os.path.join(dest, rel))
+    os.chmod(os.path.join(dest, DOG), 0o755)
+
+
+def _replace(dest, rel, text):
+    with open(os.path.join(dest, rel), 'w') as f:
+        f.write(text)
+    os.chmod(os.path.join(dest, rel), 0o755)
+
+
+def _tabs(dest):
+    """Python 2's habit: eight spaces of indentation written as a tab, which
+    Python 3 refuses beside four-space lines."""
+    path = os.path.join(dest, DOG)
+    with open(path) as f:
+        text = f.read()
+    with open(path, 'w') as f:
+        f.write(re.sub(r'(?m)^        ', '\t', text))
+
+
+def _cpp_broken(dest):
+    os.makedirs(os.path.join(dest, 'src'))
+    _replace(dest, 'src/counter.cpp', BROKEN_CPP)
+    with open(os.path.join(dest, 'CMakeLists.txt')) as f:
+        text = f.read().replace('COMPONENTS rospy', 'COMPONENTS roscpp rospy')
+    text += ('include_directories(${catkin_INCLUDE_DIRS})\n'
+             'add_executable(counter src/counter.cpp)\n'
+             'target_link_libraries(counter ${catkin_LIBRARIES})\n')
+    with open(os.path.join(dest, 'CMakeLists.txt'), 'w') as f:
+        f.write(text)
+
+
+def make_folder(dest, names=None):
+    """Write the fixture submissions named (default: all) into ``dest``."""
+    os.makedirs(dest, exist_ok=True)
+    names = list(names or EXPECTED)
+    scratch = os.path.join(dest, '.scratch')
+    for name in names:
+        if name in ('zipped', 'tarred'):
+            package = os.path.join(scratch, name, 'my_dog')      # one level down
+            _package(package)
+            if name == 'zipped':
+                with zipfile.ZipFile(os.path.join(dest, name + '.zip'), 'w') as archive:
+                    for root, _dirs, files in os.walk(os.path.join(scratch, name)):
+                        for f in files:
+                            full = os.path.join(root, f)
+                            info = zipfile.ZipInfo.from_file(
+                                full, os.path.relpath(full, os.path.join(scratch, name)))
+                            with open(full, 'rb') as src:
+                                archive.writestr(info, src.read())
+            else:
+                with tarfile.open(os.path.join(dest, name + '.tar.gz'), 'w:gz') as archive:
+                    archive.add(package, arcname='my_dog')
+            continue
+        package = os.path.join(dest, name)
+        _package(package)
+        if name == 'tabs':
+            _tabs(package)
+        elif name == 'cpp_broken':
+            _cpp_broken(package)
+        elif name == 'raises':
+            _replace(package, DOG, RAISES)
+        elif name == 'idle':
+            _replace(package, DOG, IDLE)
+        elif name == 'hostile':
+            _replace(package, DOG, HOSTILE)
+    shutil.rmtree(scratch, ignore_errors=True)
+    return dest
+
+
+if __name__ == '__main__':
+    print(make_folder(sys.argv[1], sys.argv[2:] or None))
