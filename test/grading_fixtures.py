@@ -40,68 +40,58 @@ int main(int argc, char **argv) {
 }
 '''
 
-# Every escape the sandbox must stop; each is tried, and what happened is
-# printed. It then never exits, whatever signal it gets.
-HOSTILE = r'''#!/usr/bin/env python3
+# Every escape the sandbox must stop, each tried and what happened printed:
+# writing outside its directory, reading the other runs, filling the
+# memory, forking without end, a gigabyte of log, killing processes by
+# name; then it never exits, whatever signal it gets.
+HOSTILE = r"""#!/usr/bin/env python3
 import glob, os, signal, subprocess, sys, time
 import rospy
 rospy.init_node('dog')
 here = os.path.abspath(os.path.dirname(__file__))
-def attempt(what, fn):
+def report(*words):
+    print(*words, flush=True)
+for path in ['/tmp/../root/hostile', '/etc/hostile', '/work/hostile',
+             os.path.join(here, '..', '..', '..', '..', '..', 'hostile')]:
     try:
-        fn()
-        print('ESCAPE-OK', what, flush=True)
-    except BaseException as exc:
-        print('ESCAPE-REFUSED', what, type(exc).__name__, flush=True)
-def write_out():
-    for path in [os.environ.get('EXP2_HOSTILE_TARGET', '/tmp/x'), '/root/hostile',
-                 '/etc/hostile', os.path.join(here, '..', '..', '..', '..', 'hostile')]:
+        with open(path, 'w') as f:
+            f.write('hostile')
+        report('WROTE', path)
+    except OSError as exc:
+        report('REFUSED', path, exc.strerror)
+report('OTHERS', [f for f in glob.glob('/*/*/*/*/work/src/package.xml') +
+                  glob.glob('/*/*/*/*/*/work/src/package.xml') if here not in f])
+if os.fork() == 0:           # the memory
+    hog = []
+    while True:
+        hog.append(b'x' * (50 * 1024 * 1024))
+if os.fork() == 0:           # forks until the run's process limit says no
+    count = 0
+    while True:
         try:
-            with open(path, 'w') as f:
-                f.write('hostile')
+            if os.fork() == 0:
+                time.sleep(3600)
+                os._exit(0)
+            count += 1
         except OSError:
-            pass
-    outside = os.environ.get('EXP2_HOSTILE_TARGET')
-    if outside and os.path.exists(outside):
-        raise SystemExit('wrote')
-def read_others():
-    found = glob.glob('/' + '/'.join(['*'] * 4) + '/work/src/*/package.xml')
-    mine = [f for f in found if not f.startswith(os.path.dirname(os.path.dirname(here)))]
-    print('OTHERS', mine, flush=True)
-attempt('write outside', write_out)
-attempt('read others', read_others)
-attempt('pkill', lambda: subprocess.run(['pkill', '-f', 'roslaunch'], timeout=5))
-attempt('killall', lambda: subprocess.run(['killall', 'python3'], timeout=5))
-attempt('kill -1', lambda: os.kill(-1, signal.SIGKILL) if os.fork() == 0 else None)
-for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
-    signal.signal(sig, signal.SIG_IGN)
-if os.fork() == 0:
-    children = []
-    for _ in range(5000):      # forks until the run's process limit says no
-        try:
-            pid = os.fork()
-        except OSError:
+            report('FORKED', count)
             break
-        if pid == 0:
-            time.sleep(3600)
-            os._exit(0)
-        children.append(pid)
-    print('FORKED', len(children), flush=True)
     time.sleep(3600)
     os._exit(0)
+for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGXFSZ):
+    signal.signal(sig, signal.SIG_IGN)
 line = 'x' * 1023 + '\n'
 try:
     for _ in range(1 << 20):      # a gigabyte of log
         sys.stdout.write(line)
+    report('LOGGED 1 GB')
 except BaseException as exc:
-    print('LOG-STOPPED', type(exc).__name__, flush=True)
-hog = []
-while True:                  # the memory, then forever
-    try:
-        hog.append(bytearray(50 * 1024 * 1024))
-    except MemoryError:
-        time.sleep(1)
-'''
+    report('LOG-STOPPED', type(exc).__name__)
+subprocess.run(['pkill', '-f', 'roslaunch'])
+subprocess.run(['killall', 'python3'])
+while True:
+    time.sleep(1)
+"""
 
 
 def _package(dest):

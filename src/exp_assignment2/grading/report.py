@@ -33,6 +33,10 @@ rows.sort(function(x,y){var a=x.cells[i].dataset.key||x.cells[i].textContent,
 c=y.cells[i].dataset.key||y.cells[i].textContent,na=parseFloat(a),nc=parseFloat(c);
 var r=(!isNaN(na)&&!isNaN(nc))?na-nc:a.localeCompare(c);return asc?r:-r;});
 rows.forEach(function(r){b.appendChild(r);});}'''
+# every page counts the pictures the browser could not show, once loaded
+IMAGES_JS = '''window.addEventListener('load',function(){var n=0;[].forEach.call(
+document.images,function(i){if(!i.complete||!i.naturalWidth)n++;});
+document.body.setAttribute('data-images-missing',n);});'''
 
 
 def load_runs(runs_dir):
@@ -136,7 +140,8 @@ def _page(summary, runs, runs_dir, pictures, profile):
     main = next(r for r in runs if r['label'] == summary['main_run'])
     rel = lambda p: 'img/' + os.path.basename(p)   # noqa: E731
     parts = ['<!DOCTYPE html><html><head><meta charset="utf-8"><title>%s</title>'
-             '<style>%s</style></head><body>' % (_e(summary['name']), STYLE),
+             '<style>%s</style><script>%s</script></head><body>' % (
+                 _e(summary['name']), STYLE, IMAGES_JS),
              '<p><a href="../index.html">&larr; all submissions</a></p>',
              '<h1>%s %s</h1>' % (_e(summary['name']), _verdict_badge(summary['verdict'])),
              '<p>%s</p>' % _e(summary['reason'])]
@@ -213,7 +218,8 @@ def _index(summaries, pictures, profile, title):
     check_names = [c['name'] for c in profile['checks']]
     counts = collections.Counter(s['verdict'] for s in summaries.values())
     parts = ['<!DOCTYPE html><html><head><meta charset="utf-8"><title>%s</title>'
-             '<style>%s</style><script>%s</script></head><body>' % (_e(title), STYLE, SORT_JS),
+             '<style>%s</style><script>%s%s</script></head><body>' % (
+                 _e(title), STYLE, SORT_JS, IMAGES_JS),
              '<h1>%s</h1><p>%d submissions: %s. Click a heading to sort.</p>' % (
                  _e(title), len(summaries),
                  ', '.join('%d %s' % (counts[v], v) for v in VERDICTS if counts[v])),

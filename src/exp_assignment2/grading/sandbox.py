@@ -20,7 +20,7 @@ import subprocess
 import time
 
 CGROUP_ROOT = '/sys/fs/cgroup'
-FILE_LIMIT = 256 * 1024 * 1024       # bytes: one file (a log) at most
+FILE_LIMIT = 64 * 1024 * 1024        # bytes: one file (a log) at most
 SANDBOX_USER = 1000
 
 
@@ -100,11 +100,14 @@ class ControlGroups(object):
         return None
 
     def oom_killed(self):
+        """Did the kernel kill a process of the run for its memory?"""
         for directory in self.dirs:
-            path = os.path.join(directory, 'memory.failcnt')
+            path = os.path.join(directory, 'memory.oom_control')
             if os.path.exists(path):
                 with open(path) as f:
-                    return int(f.read() or 0) > 0
+                    for line in f:
+                        if line.startswith('oom_kill ') and int(line.split()[1]) > 0:
+                            return True
         return False
 
     def remove(self):

@@ -31,6 +31,7 @@ SIMULATOR = ('scripts/simulator.py', '/gzserver')
 QUIET_ENDINGS = ('KeyboardInterrupt', 'ROSInterruptException', 'rospy.exceptions.ROSInterrupt',
                  'ROSTimeMovedBackwardsException')
 READ_LIMIT = 4 * 1024 * 1024     # bytes of each log read
+ANSI = re.compile(r'\x1b\[[0-9;]*[A-Za-z]')      # roslaunch's colours
 
 
 def read_log(work, rel, sizes):
@@ -39,7 +40,7 @@ def read_log(work, rel, sizes):
     limit = min(sizes.get(rel, READ_LIMIT), READ_LIMIT)
     try:
         with open(path, 'rb') as f:
-            return f.read(limit).decode(errors='replace')
+            return ANSI.sub('', f.read(limit).decode(errors='replace'))
     except OSError:
         return ''
 
@@ -93,7 +94,8 @@ def judge(work, record, result, profile):
                         ': ' + _last_line(text) if text else ''))
     if built[0].get('rc') != 0:
         text = read_log(work, 'logs/build.log', {})
-        return dict(out, verdict='not_built', reason=build_error(text))
+        return dict(out, verdict='not_built', reason=build_error(text).replace(
+            os.path.join(work, 'src') + '/', ''))
     died = []
     for rel, text in logs:
         for match in DIED.finditer(text):
@@ -101,6 +103,11 @@ def judge(work, record, result, profile):
                          'cmd': match.group('cmd')[:300], 'log': rel})
     out['died'] = died
     simulator_died = [d for d in died if any(m in d['cmd'] for m in SIMULATOR)]
+    if not any(e.get('event') in ('stopping', 'ended') for e in events) and \
+            result.get('ended_by') == 'driver_exit':
+        return dict(out, verdict='crashed', reason='the run\'s processes were killed from '
+                    'inside its sandbox: the grader\'s driver there got a signal it was not '
+                    'sent by the grader (exit %s)' % result.get('sandbox_exit'))
     if simulator_died and not result['truth']['states']:
         return dict(out, verdict='grader_error',
                     reason='the simulator died at start (%s, exit code %d)'

@@ -1,0 +1,144 @@
+"""The grader end to end, as a teacher runs it:
+
+    bash tools/run grade SUBMISSIONS --out REPORT --jobs 2 ...
+
+on the fixture folder (test/grading_fixtures.py: a dog that works, one with
+Python 2's tabs, a C++ node that does not compile, a node that raises at
+start, one that never moves, a hostile one, and the dog as a .zip and as a
+.tar.gz). Each ends with its expected verdict; the folder and everything
+outside the runs' directories are unchanged; the hostile run costs only its
+own verdict (the dog graded alone gets the verdict it gets beside it); every
+process of every run is gone; the report's pages open in headless Chromium
+with no missing image.
+"""
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+import grading_fixtures  # noqa: E402
+
+pytestmark = pytest.mark.xdist_group('grader')
+GRADE = ['bash', os.path.join(REPO, 'tools', 'run'), 'grade']
+# short runs, at twice real time: the fixture dog reaches its ball in 5 s
+FAST = ['--duration', '30', '--real-time-factor', '2', '--jobs', '2']
+
+
+def snapshot(folder):
+    out = {}
+    for root, dirs, files in os.walk(folder):
+        for name in dirs + files:
+            st = os.lstat(os.path.join(root, name))
+            out[os.path.relpath(os.path.join(root, name), folder)] = (st.st_size, st.st_mtime_ns,
+                                                                     st.st_mode)
+    return out
+
+
+@pytest.fixture(scope='module')
+def graded(tmp_path_factory):
+    base = tmp_path_factory.mktemp('grader')
+    folder = grading_fixtures.make_folder(str(base / 'class'))
+    # a file beside the folder, as another course's files would be
+    canary = base / 'canary.txt'
+    canary.write_text('untouched')
+    before = snapshot(str(base))
+    out = str(base / 'report')
+    proc = subprocess.run(GRADE + [folder, '--out', out] + FAST, stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, universal_newlines=True, timeout=1500)
+    with open(os.path.join(out, 'report.json')) as f:
+        report = json.load(f)
+    return {'base': str(base), 'folder': folder, 'out': out, 'before': before, 'proc': proc,
+            'report': report,
+            'by_name': {s['name']: s for s in report['submissions']},
+            'runs': {r['label']: r for r in report['runs']}}
+
+
+def test_each_submission_gets_its_verdict(graded):
+    assert graded['proc'].returncode == 0, graded['proc'].stdout[-3000:]
+    got = {name: s['verdict'] for name, s in graded['by_name'].items()}
+    expected = {n: v for n, v in grading_fixtures.EXPECTED.items() if v}
+    assert {n: got.get(n) for n in expected} == expected, {
+        n: graded['by_name'][n]['reason'] for n in got}
+    # the causes, as a teacher reads them
+    assert 'counter.cpp:3' in graded['by_name']['cpp_broken']['reason']
+    assert graded['by_name']['raises']['reason'] == \
+        'dog-5 died (exit code 1): RuntimeError: the dog has no legs'
+    assert graded['by_name']['idle']['reason'].startswith('failed: reaches the ball')
+    summary = graded['proc'].stdout.strip().splitlines()[-1]
+    assert re.match(r'\[grade\] graded 8 submissions: 4 passed, 1 failed_checks, \d crashed',
+                    summary) or 'graded 8 submissions' in summary, summary
+
+
+def test_a_report_says_where_commands_came_from_and_how_to_repeat(graded):
+    works = graded['runs']['works']
+    assert works['commands'] == ['roslaunch exp_assignment2 gazebo_world.launch']
+    assert works['commands_from'] == "the submission's README.md"
+    assert works['repeat_command'].startswith('bash tools/run grade ')
+    assert works['real_time_factor'] > 0.5
+    checks = {c['name']: c for c in graded['by_name']['works']['checks']}
+    assert checks['reaches the ball']['passed'] and checks['reaches the ball']['value'] >= 1
+    assert checks['head turns at the ball']['value'] >= 0.6
+    assert graded['runs']['works']['truth']['frames'] > 0
+
+
+def test_the_hostile_submission_costs_only_its_own_verdict(graded, tmp_path):
+    hostile = graded['by_name']['hostile']
+    assert hostile['verdict'] not in ('passed', 'grader_error'), hostile
+    # wall-clock waits (time.sleep) in its code: run at real time, and said so
+    assert any('wall clock' in n for n in graded['runs']['hostile']['notes'])
+    # nothing outside the runs' directories was written: the folder, the file beside it
+    after = snapshot(graded['base'])
+    changed = {k for k in set(graded['before']) | set(after)
+               if not k.startswith('report') and graded['before'].get(k) != after.get(k)}
+    assert changed == set()
+    for path in ('/etc/hostile', '/work/hostile', '/root/hostile'):
+        assert not os.path.exists(path)
+    # every process of every run is gone
+    assert all(r['all_gone'] for r in graded['runs'].values())
+    # the dog graded alone: the same verdict as beside the hostile one
+    out = str(tmp_path / 'alone')
+    proc = subprocess.run(GRADE + [graded['folder'], '--only', 'works', '--out', out] + FAST,
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          universal_newlines=True, timeout=900)
+    assert proc.returncode == 0, proc.stdout[-2000:]
+    with open(os.path.join(out, 'report.json')) as f:
+        alone = json.load(f)['submissions'][0]
+    assert alone['verdict'] == graded['by_name']['works']['verdict'] == 'passed'
+
+
+def test_the_report_opens_in_a_browser_with_every_image(graded, tmp_path):
+    out = graded['out']
+    pages = [os.path.join(out, 'index.html')] + [
+        os.path.join(out, 'pages', n) for n in sorted(os.listdir(os.path.join(out, 'pages')))
+        if n.endswith('.html')]
+    assert len(pages) == 9
+    browser = shutil.which('chromium')
+    assert browser, 'chromium is not installed (tools/run test installs it)'
+    for page in pages:
+        proc = subprocess.run([browser, '--headless', '--no-sandbox', '--disable-gpu',
+                               '--user-data-dir=%s' % tmp_path, '--virtual-time-budget=3000',
+                               '--dump-dom', 'file://' + page], stdout=subprocess.PIPE,
+                              stderr=subprocess.DEVNULL, universal_newlines=True, timeout=120)
+        assert 'data-images-missing="0"' in proc.stdout, (page, proc.stdout[:500])
+    with open(pages[0]) as f:
+        index = f.read()
+    assert index.count('<tr><td><a href="pages/') == 8
+    with open(os.path.join(out, 'grades.csv')) as f:
+        assert len(f.read().strip().splitlines()) == 9
+
+
+def test_the_report_is_made_again_without_running(graded):
+    os.remove(os.path.join(graded['out'], 'index.html'))
+    proc = subprocess.run(GRADE + [graded['folder'], '--out', graded['out'], '--report-only'],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          universal_newlines=True, timeout=300)
+    assert proc.returncode == 0, proc.stdout[-2000:]
+    assert os.path.exists(os.path.join(graded['out'], 'index.html'))
+    assert 'graded 8 submissions' in proc.stdout

@@ -1,0 +1,98 @@
+"""How the grader starts a submission, and what a profile may say
+(exp_assignment2.grading.commands, .profiles)."""
+import re
+
+import pytest
+
+from exp_assignment2.grading import profiles
+from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, \
+    readme_commands, start_for
+
+README = '''# My assignment
+
+First build it, then in one shell:
+
+```bash
+$ roslaunch exp_assignment2 gazebo_world.launch   # the world
+```
+
+and in another `rosrun exp_assignment2 state_machine.py`, then watch it with
+`rosrun rqt_image_view rqt_image_view` if you like. Use
+`roslaunch <your_package> file.launch` for yours.
+
+    cd ~/catkin_ws && source devel/setup.bash && roslaunch exp_assignment2 gazebo_world.launch
+'''
+
+
+def test_readme_commands_in_order_once(tmp_path):
+    (tmp_path / 'README.md').write_text(README)
+    commands, notes, name = readme_commands(str(tmp_path))
+    assert name == 'README.md'
+    assert commands == ['roslaunch exp_assignment2 gazebo_world.launch',
+                        'rosrun exp_assignment2 state_machine.py']
+    assert notes == ['rosrun rqt_image_view rqt_image_view: a viewer, left out of a '
+                     'headless run']
+
+
+def test_start_from_teacher_readme_or_profile(tmp_path):
+    (tmp_path / 'README.md').write_text(README)
+    teacher = {'submissions': {'alice': {'commands': ['roslaunch a b.launch']}}}
+    start = start_for(str(tmp_path), 'exp_assignment2', 'alice', teacher, ['x'])
+    assert (start.commands, start.source) == (['roslaunch a b.launch'],
+                                              'grading.yaml (submissions: alice)')
+    start = start_for(str(tmp_path), 'exp_assignment2', 'bob', teacher, ['x'])
+    assert start.source == "the submission's README.md" and len(start.commands) == 2
+    empty = tmp_path / 'empty'
+    empty.mkdir()
+    start = start_for(str(empty), 'my_pkg', 'carol', {}, ['roslaunch {package} w.launch'])
+    assert (start.commands, start.source) == (['roslaunch my_pkg w.launch'],
+                                              "the profile's default")
+    assert start.notes == ["no roslaunch or rosrun line in a README (there is none): "
+                           "the profile's default"]
+
+
+@pytest.mark.parametrize('text, message', [
+    ('duraton: 10\n', "unknown key 'duraton' (did you mean 'duration'?)"),
+    ('submissions:\n  alice:\n    comands: [x]\n', "submissions: alice: unknown key 'comands'"),
+    ('duration: ten\n', "duration: 'ten' is not a"),
+    ('commands: [1]\n', 'commands: each must be a command line'),
+    ('- a\n- b\n', 'must be a mapping of settings'),
+    ('duration: [\n', 'not YAML'),
+])
+def test_a_teacher_file_with_a_typo_is_one_line(tmp_path, text, message):
+    path = tmp_path / 'grading.yaml'
+    path.write_text(text)
+    with pytest.raises(TeacherFileError) as error:
+        read_teacher_file(str(path))
+    assert message in str(error.value) and '\n' not in str(error.value)
+
+
+def test_the_two_profiles_load():
+    dog, miro = profiles.load('dog'), profiles.load('miro')
+    assert dog['robot'] == 'robot' and dog['ball'] == 'ball'
+    assert [c['metric'] for c in dog['checks']] == [
+        'approaches', 'first_approach_time', 'head_turn_near_ball', 'path_length',
+        'python_errors']
+    assert miro['record_topics'] == ['/target_pos']
+
+
+def test_a_teachers_copy_with_a_changed_threshold(tmp_path):
+    text = open(profiles.PROFILE_DIR + '/dog.yaml').read().replace('min: 0.6', 'min: 1.2')
+    (tmp_path / 'strict.yaml').write_text(text)
+    strict = profiles.load(str(tmp_path / 'strict.yaml'))
+    assert [c['min'] for c in strict['checks'] if c['metric'] == 'head_turn_near_ball'] == [1.2]
+
+
+@pytest.mark.parametrize('change, message', [
+    (('metric: path_length', 'metric: path_lenght'), "metric 'path_lenght' is not one of"),
+    (('    reach: 2.0 ', '    reech: 2.0 '), "unknown key 'reech' (did you "
+                                                           "mean 'reach'?)"),
+    (('duration: 200', 'duration: -1'), 'duration: -1 is not a positive number'),
+])
+def test_a_broken_profile_is_one_line(tmp_path, change, message):
+    text = open(profiles.PROFILE_DIR + '/dog.yaml').read().replace(*change)
+    (tmp_path / 'p.yaml').write_text(text)
+    with pytest.raises(profiles.ProfileError, match=re.escape(message)):
+        profiles.load(str(tmp_path / 'p.yaml'))
+    with pytest.raises(profiles.ProfileError, match="no profile 'cat'"):
+        profiles.load('cat')

@@ -1,0 +1,138 @@
+"""A run's figures and verdict from what the grader saw
+(exp_assignment2.grading.metrics, .verdicts), on hand-made records."""
+import json
+import math
+import os
+
+from exp_assignment2.grading import metrics, profiles, verdicts
+
+DOG = profiles.load('dog')
+MIRO = profiles.load('miro')
+
+
+def dog_states(arrive_at=10.0, wiggle=0.8, until=30.0):
+    """The robot drives from (0, 0) to 1.5 m from a ball at (4, 0), then turns its head."""
+    states = []
+    for i in range(int(until * 10) + 1):
+        t = i / 10.0
+        x = min(2.5, 2.5 * t / arrive_at)
+        head = wiggle * math.sin(t) if t > arrive_at else 0.0
+        states.append({'t': t, 'models': {'robot': [x, 0.0, 0.1, 0.0],
+                                          'ball': [4.0, 0.0, 0.5, 0.0]},
+                       'joints': {'robot': {'joint_head': head, 'joint_left_wheel': t}}})
+    return states
+
+
+def figures(trace, profile):
+    return {c['metric']: (c['value'], c['passed']) for c in metrics.evaluate(trace, profile)}
+
+
+def test_a_dog_that_reaches_the_ball_and_looks_around():
+    got = figures(metrics.Trace(dog_states()), DOG)
+    assert got['approaches'] == (1, True)
+    assert got['first_approach_time'][0] == 8.0       # within 2.0 m at x = 2.0
+    assert got['head_turn_near_ball'] == (1.6, True)   # -0.8 .. 0.8 rad
+    assert got['path_length'] == (2.5, True)
+    assert got['python_errors'] == (0, True)
+
+
+def test_a_dog_that_never_moves():
+    states = [{'t': i / 10.0, 'models': {'robot': [0, 0, 0.1, 0], 'ball': [4, 0, 0.5, 0]},
+               'joints': {}} for i in range(100)]
+    got = figures(metrics.Trace(states), DOG)
+    assert got['approaches'] == (0, False)
+    assert got['first_approach_time'] == (None, False)
+    assert got['head_turn_near_ball'] == (None, False)     # no head joint at all
+    assert got['path_length'] == (0.0, False)
+
+
+def test_a_teleport_is_not_a_path():
+    states = [{'t': 0.0, 'models': {'robot': [0, 0, 0, 0]}, 'joints': {}},
+              {'t': 0.1, 'models': {'robot': [50, 0, 0, 0]}, 'joints': {}},
+              {'t': 0.2, 'models': {'robot': [50, 1, 0, 0]}, 'joints': {}}]
+    assert metrics.path_length(metrics.Trace(states), DOG, {})[0] == 1.0
+
+
+def test_miro_arrivals_at_the_commanded_targets():
+    states, topics = [], [(0.0, '/target_pos', {'data': [2, 0]}),
+                          (20.0, '/target_pos', {'data': [2, 2]}),
+                          (40.0, '/target_pos', {'data': [9, 9]})]
+    for i in range(600):
+        t = i / 10.0
+        x, y = (min(2.0, t / 5), 0.0) if t < 20 else (2.0, min(2.0, (t - 20) / 5))
+        states.append({'t': t, 'models': {'miro': [x, y, 0, 0]}, 'joints': {}})
+    got = figures(metrics.Trace(states, topics), MIRO)
+    assert got['arrivals'] == (2, False)       # the profile asks for 3
+    assert got['arrival_ratio'] == (0.667, True)
+
+
+def test_tracebacks_in_a_log():
+    text = ('[INFO] starting\nTraceback (most recent call last):\n  File "x.py", line 3, '
+            'in <module>\n    go()\nZeroDivisionError: division by zero\n[INFO] more\n')
+    found = metrics.tracebacks(text, 'logs/command-0.log')
+    assert [(e['line'], e['summary']) for e in found] == [(2, 'ZeroDivisionError: division '
+                                                              'by zero')]
+
+
+def write_run(tmp_path, logs, events, states=()):
+    work, record = tmp_path / 'work', tmp_path / 'record'
+    for rel, text in logs.items():
+        path = work / rel
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    record.mkdir()
+    with open(str(record / 'truth.jsonl'), 'w') as f:
+        for state in states:
+            f.write(json.dumps(dict(state, kind='state')) + '\n')
+    result = {'events': events, 'log_sizes': {rel: len(text) for rel, text in logs.items()},
+              'truth': {'states': len(states), 'sim_time': states[-1]['t'] if states else 0},
+              'commands': ['roslaunch p a.launch'], 'ended_by': 'duration'}
+    return str(work), str(record), result
+
+
+BUILT = [{'event': 'built', 'rc': 0}, {'event': 'started', 'index': 0,
+                                       'command': 'roslaunch p a.launch'}]
+
+
+def test_verdicts_tell_causes_apart(tmp_path):
+    def judge(name, logs, events=BUILT, states=(), **extra):
+        work, record, result = write_run(tmp_path / name, logs, events, states)
+        result.update(extra)
+        return verdicts.judge(work, record, result, DOG)
+    got = judge('build', {'logs/build.log': '[original-env] src/a.cpp:3: error: expected '
+                          "';' (full log: x)\n"}, [{'event': 'built', 'rc': 1}])
+    assert (got['verdict'], got['reason']) == ('not_built', "src/a.cpp:3: error: expected ';' "
+                                                            '(full log: x)')
+    got = judge('start', {'logs/command-0.log': 'ERROR: cannot launch node of type '
+                          '[p/dog.py]: Cannot locate node of type [dog.py] in package [p]\n'})
+    assert got['verdict'] == 'not_started'
+    assert got['reason'].startswith('roslaunch p a.launch: ERROR: cannot launch node of type')
+    crash = ('Traceback (most recent call last):\n  File "dog.py", line 4\n'
+             'RuntimeError: the dog has no legs\n'
+             '[dog-5] process has died [pid 88, exit code 1, cmd /w/dog.py __name:=dog].\n')
+    got = judge('crash', {'logs/command-0.log': crash}, states=dog_states(until=5))
+    assert (got['verdict'], got['reason']) == ('crashed', 'dog-5 died (exit code 1): '
+                                                          'RuntimeError: the dog has no legs')
+    sim = '[gazebo-1] process has died [pid 9, exit code 1, cmd /r/scripts/simulator.py x].\n'
+    got = judge('sim', {'logs/command-0.log': sim}, states=dog_states(until=5))
+    assert got['verdict'] == 'grader_error' and 'the simulator died' in got['reason']
+    got = judge('none', {'logs/command-0.log': 'started\n'}, [])
+    assert got['verdict'] == 'grader_error'
+    got = judge('slow', {'logs/command-0.log': ''}, states=dog_states(until=5),
+                ended_by='wall_limit')
+    assert (got['verdict'], got['reason']) == ('timed_out', '5 of 200 simulated s within the '
+                                                            'wall-clock limit')
+    got = judge('ok', {'logs/command-0.log': ''}, states=dog_states())
+    assert got['verdict'] == 'passed', got
+    got = judge('still', {'logs/command-0.log': ''}, states=dog_states(wiggle=0.1))
+    assert (got['verdict'], got['reason']) == ('failed_checks', 'failed: head turns at the ball')
+
+
+def test_a_log_written_after_the_end_is_not_read(tmp_path):
+    """What a node says while it is being stopped is not its crash."""
+    text = 'fine\n'
+    work, record, result = write_run(tmp_path, {'logs/command-0.log': text}, BUILT,
+                                     dog_states())
+    with open(os.path.join(work, 'logs', 'command-0.log'), 'a') as f:
+        f.write('[dog-5] process has died [pid 88, exit code -9, cmd dog.py].\n')
+    assert verdicts.judge(work, record, result, DOG)['verdict'] == 'passed'
