@@ -91,7 +91,7 @@ def thumbnail(source, path, width=160):
 
 def chosen_frames(record_dir, trace, profile):
     """{moment: frame file} for the first sight of the ball, the closest
-    approach and the end (frames: ``record/frames/<camera>_<t>.jpg``)."""
+    approach and the end, in that order (frames: ``record/frames/<camera>_<t>.jpg``)."""
     directory = os.path.join(record_dir, 'frames')
     if not os.path.isdir(directory):
         return {}
@@ -104,7 +104,7 @@ def chosen_frames(record_dir, trace, profile):
     if not frames:
         return {}
     frames.sort()
-    chosen = {'end': frames[-1][1]}
+    chosen = {}
     if profile.get('ball'):
         from exp_assignment2.vision import BallDetector
         import cv2
@@ -118,4 +118,5 @@ def chosen_frames(record_dir, trace, profile):
         if distances:
             t_close = min(distances, key=lambda d: d[1])[0]
             chosen['closest approach'] = min(frames, key=lambda f: abs(f[0] - t_close))[1]
+    chosen['end'] = frames[-1][1]
     return chosen

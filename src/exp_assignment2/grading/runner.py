@@ -14,7 +14,7 @@ import subprocess
 import threading
 import time
 
-from exp_assignment2.grading import verdicts
+from exp_assignment2.grading import cpu, verdicts
 from exp_assignment2.grading.sandbox import Sandbox, SandboxError
 from exp_assignment2.grading.submissions import SubmissionError, package_name, unpack
 from exp_assignment2.grading.truth import TruthServer
@@ -227,6 +227,7 @@ class Run(object):
             if reason:
                 ending = (reason, now)
                 result['ended_by'] = reason
+                result['cpu_s'], result['memory_mb'] = cpu.snapshot(box.groups.pids())
                 result['log_sizes'] = log_sizes(self.work)
                 self.state = 'ending'
                 try:

@@ -2,7 +2,7 @@
 
 Python imports ``sitecustomize`` at start-up from the first directory of
 sys.path that has one; this directory is on PYTHONPATH only inside that
-environment. It does four things:
+environment. It does five things:
 
 1. runs the ``sitecustomize`` it shadows (Debian's, or one further down
    PYTHONPATH), so nothing the system configured is lost;
@@ -17,6 +17,9 @@ environment. It does four things:
 4. unless EXP2_XMLRPC_END is 0, arranges for rospy's XML-RPC thread to end
    when the node shuts down, as it did under Python 2, instead of polling a
    closed socket at 100 % of a core (exp2_xmlrpc_end.py).
+
+5. when EXP2_SEED is set (a run of the grader, with its seed), seeds Python's
+   ``random`` with it, so that a run can be repeated as it was.
 
 Without a display nothing is changed: cv2.imshow then behaves as OpenCV's Qt
 backend does, which aborts the whole process ("could not connect to display",
@@ -56,3 +59,6 @@ if os.environ.get('EXP2_CV2_GUI_THREAD', '1') != '0' and _display_configured():
 if os.environ.get('EXP2_XMLRPC_END', '1') != '0':
     import exp2_xmlrpc_end
     exp2_xmlrpc_end.install()
+if os.environ.get('EXP2_SEED', '').isdigit():
+    import random
+    random.seed(int(os.environ['EXP2_SEED']))
