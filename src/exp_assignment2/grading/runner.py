@@ -224,6 +224,8 @@ class Run(object):
                 last_size_check = now
                 if directory_size(self.work) > WORK_LIMIT:
                     reason = 'disk_limit'
+                elif verdicts.student_node_died(self.work):
+                    reason = 'node_died'      # the verdict is 'crashed' whatever comes
             if reason:
                 ending = (reason, now)
                 result['ended_by'] = reason

@@ -150,6 +150,21 @@ def judge(work, record, result, profile):
                 reason='' if passed else 'failed: ' + ', '.join(failed_names))
 
 
+def student_node_died(work):
+    """Has a node other than the simulator died with an error (the commands' logs, now)?"""
+    logs = os.path.join(work, 'logs')
+    try:
+        names = [n for n in os.listdir(logs) if n.startswith('command-')]
+    except OSError:
+        return False
+    for name in names:
+        text = read_log(work, os.path.join('logs', name), {})
+        if any(int(m.group('code')) != 0 and not any(s in m.group('cmd') for s in SIMULATOR)
+               for m in DIED.finditer(text)):
+            return True
+    return False
+
+
 def _last_line(text):
     lines = [l for l in text.splitlines() if l.strip()]
     return lines[-1].strip()[:300] if lines else ''
