@@ -3,25 +3,29 @@ every submission of a folder built, run in its sandbox and judged; one report.
 
     grade SUBMISSIONS [--out DIR] [--jobs K] [--duration S] [--repeat R]
           [--profile dog|miro|FILE] [--real-time-factor F] [--seed N]
-          [--only NAME ...] [--report-only]
+          [--only NAME ...] [--scheduler tcp://HOST:PORT] [--report-only]
 """
 import argparse
-import concurrent.futures
 import multiprocessing
 import os
 import signal
 import sys
-import threading
 import time
 
-from exp_assignment2.grading import profiles, report
+from exp_assignment2.grading import profiles, report, tasks
+from exp_assignment2.grading.cluster import Cluster, ClusterError, lost_result, payload, \
+    unpack_result
 from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, start_for
 from exp_assignment2.grading.progress import Progress
 from exp_assignment2.grading.runner import Run, RunSettings
 from exp_assignment2.grading.submissions import SubmissionError, discover, find_package, \
     package_name
 
-EXIT_OK, EXIT_USAGE = 0, 2
+EXIT_OK, EXIT_USAGE, EXIT_CLUSTER = 0, 2, 3
+
+
+def _interrupt(*_):
+    raise KeyboardInterrupt()
 
 
 def parse_args(argv):
@@ -40,6 +44,9 @@ def parse_args(argv):
     parser.add_argument('--real-time-factor', type=float, default=1.0,
                         help='simulated s per wall s (default 1, as the code was written for)')
     parser.add_argument('--only', nargs='+', metavar='NAME', help='only these submissions')
+    parser.add_argument('--scheduler', metavar='tcp://HOST:PORT',
+                        help='run on the workers of this Dask scheduler (tools/run grade-worker)'
+                        ' instead of this machine alone')
     parser.add_argument('--report-only', action='store_true',
                         help='make the report again from the runs already in --out')
     args = parser.parse_args(argv)
@@ -60,17 +67,6 @@ def parse_args(argv):
 def default_jobs(profile):
     """As many runs as the cores keep at real time (the profile's measured cost)."""
     return max(1, int(multiprocessing.cpu_count() // float(profile['cpu_per_run'])))
-
-
-def version():
-    import re
-    here = os.path.dirname(os.path.abspath(__file__))
-    path = os.path.join(here, '..', '..', '..', 'package.xml')
-    try:
-        with open(path) as f:
-            return re.search(r'<version>([^<]+)</version>', f.read()).group(1)
-    except (OSError, AttributeError):
-        return 'unknown'
 
 
 def plan_runs(args, profile, out, log):
@@ -94,7 +90,7 @@ def plan_runs(args, profile, out, log):
                            real_time_factor=teacher.get('real_time_factor',
                                                         args.real_time_factor),
                            duration=args.duration or teacher.get('duration'),
-                           version=version(), log=log)
+                           version=tasks.package_version(), log=log)
     if 'delay' in teacher:
         profile['delay'] = teacher['delay']
     runs = []
@@ -137,28 +133,34 @@ class _Deferred(object):
                          self.teacher, self.profile['default_commands'])
 
 
-def grade(runs, jobs, progress):
-    """Run every Run, ``jobs`` at once; Ctrl-C ends every run and returns."""
-    stop = threading.Event()
-    for run in runs:
-        run.stop_event = stop
-    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        futures = {pool.submit(run.go): run for run in runs}
-        try:
-            while True:
-                done = sum(f.done() for f in futures)
-                progress.show(runs)
-                if done == len(futures):
-                    break
-                time.sleep(0.5)
-        except KeyboardInterrupt:
-            stop.set()
-            progress.line('Ctrl-C: ending every run')
-            for future in futures:
-                future.cancel()
-            raise
-        for future in futures:
-            future.result()
+def grade(runs, cluster, progress):
+    """Every Run as a Dask task; Ctrl-C ends every run (on every worker) and returns."""
+    from distributed import KilledWorker
+    version = cluster.version
+    futures = {cluster.submit(payload(run, version)): run for run in runs}
+    pending = set(futures)
+    try:
+        while pending:
+            cluster.poll_starts()
+            for future in [f for f in pending if f.done()]:
+                pending.discard(future)
+                run = futures[future]
+                cluster.poll_starts()
+                try:
+                    unpack_result(future.result(), run, cluster.started)
+                except (KilledWorker, tasks.VersionMismatch, OSError, RuntimeError) as exc:
+                    lost_result(run, exc, cluster.started)
+            for future in pending:
+                run = futures[future]
+                if run.label in cluster.started and run.state == 'waiting':
+                    run.state = 'running'
+            progress.show(runs)
+            time.sleep(0.5)
+        progress.show(runs)
+    except KeyboardInterrupt:
+        progress.line('Ctrl-C: ending every run')
+        cluster.cancel(pending)
+        raise
 
 
 def main(argv=None):
@@ -187,18 +189,24 @@ def main(argv=None):
     log('%d runs of %d submissions, %d at once, %g simulated s each, profile %s; report: %s'
         % (len(runs), len({r.submission.name for r in runs}), jobs,
            runs[0].settings.duration, profile['name'], out))
-    progress = Progress(len(runs), jobs)
-    previous = signal.getsignal(signal.SIGTERM)
-    signal.signal(signal.SIGTERM, lambda *_: (_ for _ in ()).throw(KeyboardInterrupt()))
     try:
-        grade(runs, jobs, progress)
+        cluster = Cluster(args.scheduler, jobs=jobs, log=log)
+    except ClusterError as exc:
+        log(str(exc))
+        return EXIT_CLUSTER
+    progress = Progress(len(runs), jobs, extra=lambda: '%d workers' % cluster.worker_count())
+    previous = signal.getsignal(signal.SIGTERM)
+    signal.signal(signal.SIGTERM, _interrupt)
+    try:
+        grade(runs, cluster, progress)
     except KeyboardInterrupt:
         log('stopped: the report holds the runs that ended')
-        summaries = report.write(out, profile)
+        report.write(out, profile)
         return 130
     finally:
         signal.signal(signal.SIGTERM, previous)
         progress.close()
+        cluster.close()
     summaries = report.write(out, profile)
     log(summary_line(summaries, out))
     return EXIT_OK

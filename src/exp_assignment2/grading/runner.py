@@ -172,7 +172,7 @@ class Run(object):
 
     def repeat_command(self):
         return 'bash tools/run grade %s --profile %s --seed %d --duration %g%s' % (
-            self.submission.path, self.settings.profile['name'], self.seed,
+            getattr(self.submission, 'display_path', self.submission.path), self.settings.profile['name'], self.seed,
             self.settings.duration, ' --real-time-factor %g' % self.settings.real_time_factor
             if self.settings.real_time_factor != 1.0 else '')
 

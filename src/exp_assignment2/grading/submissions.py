@@ -177,7 +177,7 @@ def _unpack_tar(path, dest, limit):
             os.chmod(target, 0o755 if member.mode & 0o111 else 0o644)
 
 
-def _copy_dir(path, dest, limit):
+def copy_dir(path, dest, limit):
     """A directory submission copied (links out of it refused, size bounded)."""
     root = os.path.realpath(path)
     total = 0
@@ -210,7 +210,7 @@ def unpack(submission, dest, limit=MAX_UNPACKED):
     os.makedirs(dest, exist_ok=True)
     try:
         if submission.kind == 'dir':
-            _copy_dir(submission.path, dest, limit)
+            copy_dir(submission.path, dest, limit)
         elif submission.kind == 'zip':
             _unpack_zip(submission.path, dest, limit)
         else:

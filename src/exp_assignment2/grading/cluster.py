@@ -1,0 +1,179 @@
+"""The grader's runs as Dask tasks, on one machine or many (no ROS).
+
+One code path: by default an in-process local cluster with ``--jobs`` slots;
+with ``--scheduler tcp://HOST:PORT``, that scheduler's workers (``bash
+tools/run grade-worker``). Each task asks for one ``runs`` resource, so a
+worker started with ``--resources runs=K`` takes at most K runs at once.
+
+* A worker whose package version is not the teacher's is left out (one line
+  naming both versions), and refuses a run that reaches it anyway.
+* A worker lost in the middle of a run: Dask runs the task again on another
+  worker; each start is announced on a Dask queue, so the report says which
+  runs were run again and where. After ``allowed-failures`` losses the run
+  ends as ``grader_error`` (KilledWorker), never as the student's fault.
+* Ctrl-C (or SIGTERM) sets a Dask event that every running task polls: its
+  run is ended at once (its sandbox killed), and the futures are cancelled.
+"""
+import os
+import socket
+import time
+import uuid
+
+from exp_assignment2.grading import tasks
+
+CONNECT_TIMEOUT = 5.0          # s to reach a scheduler, then one line
+ALLOWED_FAILURES = 2           # a run is tried again this often when its worker is lost
+
+
+class ClusterError(Exception):
+    """One line: the scheduler cannot be reached, or no worker can take runs."""
+
+
+def _check_reachable(address, timeout=CONNECT_TIMEOUT):
+    """A plain TCP connection first: Dask's own can take much longer to give up."""
+    hostport = address.split('://', 1)[-1]
+    host, _, port = hostport.rpartition(':')
+    try:
+        with socket.create_connection((host or 'localhost', int(port)), timeout=timeout):
+            return
+    except (OSError, ValueError) as exc:
+        raise ClusterError('cannot reach the Dask scheduler at %s: %s' % (
+            address, getattr(exc, 'strerror', None) or exc))
+
+
+def _remote_version():
+    return tasks.package_version()
+
+
+def _task(payload, stop_name, starts_name):
+    """What a worker runs: announce the start, run, watch for the teacher's stop."""
+    from distributed import Event, Queue, get_worker
+    worker = get_worker()
+    Queue(starts_name).put({'label': payload['label'], 'worker': worker.address,
+                            'time': time.time()})
+    stop = Event(stop_name)
+    return tasks.run_task(payload, stop=lambda: stop.wait(1.0))
+
+
+class Cluster(object):
+    """A Dask client for grading: ``submit`` runs, ``poll`` for progress, ``close``."""
+
+    def __init__(self, scheduler=None, jobs=1, log=print):
+        import dask
+        from distributed import Client, LocalCluster
+        self.log = log
+        dask.config.set({'distributed.scheduler.allowed-failures': ALLOWED_FAILURES,
+                         'distributed.comm.timeouts.connect': '%ds' % CONNECT_TIMEOUT})
+        self.local = None
+        if scheduler:
+            _check_reachable(scheduler)
+            try:
+                self.client = Client(scheduler, timeout=CONNECT_TIMEOUT)
+            except (OSError, TimeoutError) as exc:
+                raise ClusterError('cannot reach the Dask scheduler at %s: %s'
+                                   % (scheduler, exc))
+            dashboard = self.client.dashboard_link
+            if dashboard:
+                log('Dask dashboard: %s' % dashboard)
+        else:
+            self.local = LocalCluster(n_workers=1, threads_per_worker=jobs, processes=False,
+                                      resources={'runs': jobs}, dashboard_address=None)
+            self.client = Client(self.local)
+        self.token = uuid.uuid4().hex[:12]
+        from distributed import Event, Queue
+        self.stop_event = Event('exp2-grade-stop-' + self.token, client=self.client)
+        self.starts = Queue('exp2-grade-starts-' + self.token, client=self.client)
+        self.started = {}           # label -> [worker address, ...] (more than one: run again)
+        self.version = tasks.package_version()
+        self.workers = self._eligible_workers()
+
+    def _eligible_workers(self):
+        """Addresses of the workers with the teacher's version (None: all, on one machine)."""
+        if self.local is not None:
+            return None
+        versions = self.client.run(_remote_version)
+        good = [w for w, v in versions.items() if v == self.version]
+        for worker, version in sorted(versions.items()):
+            if version != self.version:
+                self.log('worker %s has exp_assignment2 %s, the teacher %s: refused'
+                         % (worker, version, self.version))
+        if not good:
+            raise ClusterError('no worker with exp_assignment2 %s (workers: %s)' % (
+                self.version, ', '.join('%s %s' % kv for kv in sorted(versions.items()))
+                or 'none'))
+        return good
+
+    def worker_count(self):
+        try:
+            return len(self.client.scheduler_info()['workers'])
+        except Exception:     # the scheduler went away: the progress line says 0
+            return 0
+
+    def submit(self, payload):
+        return self.client.submit(_task, payload, 'exp2-grade-stop-' + self.token,
+                                  'exp2-grade-starts-' + self.token, resources={'runs': 1},
+                                  pure=False, workers=self.workers,
+                                  allow_other_workers=False, key='grade-%s-%s' % (
+                                      payload['label'], self.token))
+
+    def poll_starts(self):
+        """Read the start announcements (what runs where, and which started again)."""
+        for start in self.starts.get(batch=True):      # what is there now, without waiting
+            self.started.setdefault(start['label'], []).append(start['worker'])
+
+    def cancel(self, futures):
+        self.stop_event.set()
+        self.client.cancel(list(futures))
+
+    def close(self):
+        try:
+            self.client.close()
+        finally:
+            if self.local is not None:
+                self.local.close()
+
+
+def payload(run, version):
+    """What a task needs to run one Run anywhere (see tasks.run_task)."""
+    kind, data = tasks.pack_submission(run.submission)
+    s = run.settings
+    return {'name': run.submission.name, 'path': run.submission.path, 'kind': kind,
+            'data': data, 'start': run.start, 'seed': run.seed, 'label': run.label,
+            'profile': s.profile, 'duration': s.duration, 'real_time_factor': s.real_time_factor,
+            'hidden': s.hidden, 'version': version}
+
+
+def unpack_result(outcome, run, started):
+    """The run's directory and result on the teacher's side; its retries noted."""
+    result = outcome['result']
+    tasks.unpack_run(outcome['archive'], run.dir)
+    workers = started.get(run.label) or []
+    result['workers'] = workers
+    if len(workers) > 1:
+        result.setdefault('notes', []).append(
+            'run again: its worker %s was lost in the middle of the run; done on %s'
+            % (', '.join(workers[:-1]), workers[-1]))
+    _rewrite(run, result)
+    return result
+
+
+def lost_result(run, error, started):
+    """A run Dask gave up on (its workers kept dying): the grader's fault."""
+    result = {'name': run.submission.name, 'label': run.label, 'seed': run.seed,
+              'verdict': 'grader_error', 'commands': getattr(run.start, 'commands', []),
+              'commands_from': getattr(run.start, 'source', ''),
+              'reason': 'the grader lost this run: %s' % (str(error).splitlines()[0][:300]
+                                                          if str(error) else type(error).__name__),
+              'workers': started.get(run.label) or [], 'truth': {'sim_time': 0.0},
+              'notes': []}
+    os.makedirs(run.record, exist_ok=True)
+    _rewrite(run, result)
+    return result
+
+
+def _rewrite(run, result):
+    import json
+    os.makedirs(run.record, exist_ok=True)
+    with open(os.path.join(run.record, 'run.json'), 'w') as f:
+        json.dump(result, f, indent=1, default=str)
+    run.result, run.state = result, 'done'
