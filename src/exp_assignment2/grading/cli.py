@@ -186,14 +186,15 @@ def main(argv=None):
         return EXIT_USAGE
     os.makedirs(os.path.join(out, 'runs'), exist_ok=True)
     jobs = args.jobs or default_jobs(profile)
-    log('%d runs of %d submissions, %d at once, %g simulated s each, profile %s; report: %s'
-        % (len(runs), len({r.submission.name for r in runs}), jobs,
-           runs[0].settings.duration, profile['name'], out))
     try:
         cluster = Cluster(args.scheduler, jobs=jobs, log=log)
     except ClusterError as exc:
         log(str(exc))
         return EXIT_CLUSTER
+    log('%d runs of %d submissions, %s, %g simulated s each, profile %s; report: %s'
+        % (len(runs), len({r.submission.name for r in runs}),
+           'on the workers of ' + args.scheduler if args.scheduler else '%d at once' % jobs,
+           runs[0].settings.duration, profile['name'], out))
     progress = Progress(len(runs), jobs, extra=lambda: '%d workers' % cluster.worker_count())
     previous = signal.getsignal(signal.SIGTERM)
     signal.signal(signal.SIGTERM, _interrupt)

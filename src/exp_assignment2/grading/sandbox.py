@@ -63,7 +63,8 @@ class ControlGroups(object):
             if parent is None:
                 self.notes.append('no %s limit (no writable control group)' % controller)
                 continue
-            directory = os.path.join(parent, 'exp2-grade-' + name)
+            directory = os.path.join(parent, 'exp2-grade-%s-%d-%d' % (name, os.getpid(),
+                                                                       id(self)))
             try:
                 os.makedirs(directory, exist_ok=True)
                 for key, value in settings.items():
