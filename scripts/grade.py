@@ -1,8 +1,5 @@
 #!/usr/bin/env python3
-"""Grade a folder of submissions (exp_assignment2.grading.cli; docs/grading.md)."""
-import sys
+"""Grades a folder of submissions: rosrun exp_assignment2 grade.py SUBMISSIONS (docs/grading.md)."""
+from exp_assignment2.nodes.grade import main
 
-from exp_assignment2.grading.cli import main
-
-if __name__ == '__main__':
-    sys.exit(main())
+main()
