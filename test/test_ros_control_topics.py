@@ -19,7 +19,7 @@ from original_env_helpers import PYTHON
 
 pytestmark = pytest.mark.skipif(not os.path.exists(PYTHON), reason='needs Debian python3')
 
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 URDF = os.path.join(REPO, 'urdf')
 
 CONTROLLERS = {'joint_state_controller': {'type': 'joint_state_controller/JointStateController',
