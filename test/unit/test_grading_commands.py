@@ -53,7 +53,6 @@ def test_start_from_teacher_readme_or_profile(tmp_path):
 
 @pytest.mark.parametrize('text, message', [
     ('duraton: 10\n', "unknown key 'duraton' (did you mean 'duration'?)"),
-    ('submissions:\n  alice:\n    comands: [x]\n', "submissions: alice: unknown key 'comands'"),
     ('duration: ten\n', "duration: 'ten' is not a"),
     ('commands: [1]\n', 'commands: each must be a command line'),
     ('- a\n- b\n', 'must be a mapping of settings'),
@@ -96,3 +95,13 @@ def test_a_broken_profile_is_one_line(tmp_path, change, message):
         profiles.load(str(tmp_path / 'p.yaml'))
     with pytest.raises(profiles.ProfileError, match="no profile 'cat'"):
         profiles.load('cat')
+
+
+def test_a_typo_in_one_submissions_settings_costs_that_one_only(tmp_path):
+    path = tmp_path / 'grading.yaml'
+    path.write_text('submissions:\n  alice:\n    comands: [x]\n  bob:\n    skip: true\n')
+    teacher = read_teacher_file(str(path))
+    assert teacher['errors'] == {'alice': "grading.yaml: submissions: alice: unknown key "
+                                          "'comands' (did you mean 'commands'?) (known: "
+                                          "commands, skip)"}
+    assert teacher['submissions'] == {'bob': {'skip': True}}

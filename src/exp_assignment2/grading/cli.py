@@ -14,7 +14,7 @@ import time
 
 from exp_assignment2.grading import profiles, report, tasks
 from exp_assignment2.grading.cluster import Cluster, ClusterError, lost_result, payload, \
-    unpack_result
+    refused_result, unpack_result
 from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, start_for
 from exp_assignment2.grading.progress import Progress
 from exp_assignment2.grading.runner import Run, RunSettings
@@ -102,7 +102,9 @@ def plan_runs(args, profile, out, log):
         start = _start(submission, teacher, profile)
         for r in range(args.repeat):
             label = submission.name if args.repeat == 1 else '%s-r%d' % (submission.name, r + 1)
-            runs.append(Run(settings, submission, start, seed=args.seed + r, label=label))
+            run = Run(settings, submission, start, seed=args.seed + r, label=label)
+            run.refused = teacher['errors'].get(submission.name) if teacher else None
+            runs.append(run)
     return runs, profile
 
 
@@ -137,7 +139,11 @@ def grade(runs, cluster, progress):
     """Every Run as a Dask task; Ctrl-C ends every run (on every worker) and returns."""
     from distributed import KilledWorker
     version = cluster.version
-    futures = {cluster.submit(payload(run, version)): run for run in runs}
+    for run in runs:
+        if getattr(run, 'refused', None):       # the teacher's file is wrong about it
+            refused_result(run, run.refused)
+    futures = {cluster.submit(payload(run, version)): run for run in runs
+               if not getattr(run, 'refused', None)}
     pending = set(futures)
     try:
         while pending:

@@ -159,12 +159,17 @@ def unpack_result(outcome, run, started):
 
 def lost_result(run, error, started):
     """A run Dask gave up on (its workers kept dying): the grader's fault."""
+    return refused_result(run, 'the grader lost this run: %s' % (
+        str(error).splitlines()[0][:300] if str(error) else type(error).__name__),
+        started.get(run.label) or [])
+
+
+def refused_result(run, reason, workers=()):
+    """A run that did not run, for a reason of the grader's or the teacher's."""
     result = {'name': run.submission.name, 'label': run.label, 'seed': run.seed,
               'verdict': 'grader_error', 'commands': getattr(run.start, 'commands', []),
               'commands_from': getattr(run.start, 'source', ''),
-              'reason': 'the grader lost this run: %s' % (str(error).splitlines()[0][:300]
-                                                          if str(error) else type(error).__name__),
-              'workers': started.get(run.label) or [], 'truth': {'sim_time': 0.0},
+              'reason': reason, 'workers': list(workers), 'truth': {'sim_time': 0.0},
               'notes': []}
     os.makedirs(run.record, exist_ok=True)
     _rewrite(run, result)

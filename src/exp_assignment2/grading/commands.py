@@ -21,7 +21,7 @@ PLACEHOLDER = re.compile(r'[<>{}\[\]]|\.\.\.|\bYOUR_|\bpackage_name\b', re.IGNOR
 
 TOP_KEYS = {'profile': str, 'duration': (int, float), 'commands': list, 'delay': (int, float),
             'real_time_factor': (int, float), 'submissions': dict, 'with': list}
-ONE_KEYS = {'commands': list, 'delay': (int, float), 'duration': (int, float), 'skip': bool}
+ONE_KEYS = {'commands': list, 'skip': bool}
 
 
 class TeacherFileError(Exception):
@@ -124,10 +124,17 @@ def read_teacher_file(path):
     if not isinstance(data, dict):
         raise TeacherFileError('%s: must be a mapping of settings' % name)
     _check_keys(data, TOP_KEYS, name)
-    for who, settings in (data.get('submissions') or {}).items():
-        if not isinstance(settings, dict):
-            raise TeacherFileError('%s: submissions: %s: must be a mapping' % (name, who))
-        _check_keys(settings, ONE_KEYS, '%s: submissions: %s' % (name, who))
+    # a mistake in one submission's settings costs that submission only: it is
+    # kept in 'errors' (the grader reports it for that one) and its settings dropped
+    data['errors'] = {}
+    for who, settings in list((data.get('submissions') or {}).items()):
+        try:
+            if not isinstance(settings, dict):
+                raise TeacherFileError('%s: submissions: %s: must be a mapping' % (name, who))
+            _check_keys(settings, ONE_KEYS, '%s: submissions: %s' % (name, who))
+        except TeacherFileError as exc:
+            data['errors'][str(who)] = str(exc)
+            del data['submissions'][who]
     return data
 
 
