@@ -45,9 +45,10 @@ def _remote_version():
     return tasks.package_version()
 
 
-def _task(payload, stop_name, starts_name):
+def _task(payload, data, stop_name, starts_name):
     """What a worker runs: announce the start, run, watch for the teacher's stop."""
     from distributed import Event, Queue, get_worker
+    payload = dict(payload, data=data)
     worker = get_worker()
     Queue(starts_name).put({'label': payload['label'], 'worker': worker.address,
                             'time': time.time()})
@@ -110,7 +111,10 @@ class Cluster(object):
             return 0
 
     def submit(self, payload):
-        return self.client.submit(_task, payload, 'exp2-grade-stop-' + self.token,
+        # the submission's bytes go to the workers apart, not in the task graph
+        payload = dict(payload)
+        data = self.client.scatter(payload.pop('data'), hash=False)
+        return self.client.submit(_task, payload, data, 'exp2-grade-stop-' + self.token,
                                   'exp2-grade-starts-' + self.token, resources={'runs': 1},
                                   pure=False, workers=self.workers,
                                   allow_other_workers=False, key='grade-%s-%s' % (
