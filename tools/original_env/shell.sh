@@ -67,10 +67,16 @@ fi
 # file in the package would be one catkin does not install.
 export EXP2_ORIGINAL_BIN="$WS/original_env_bin"
 mkdir -p "$EXP2_ORIGINAL_BIN"
-for name in python python3; do
+# python2 too: `#!/usr/bin/env python2` ran on the students' machines.
+for name in python python2 python3; do
   install -m 0755 "$HERE/python_launcher.sh" "$EXP2_ORIGINAL_BIN/.$name.$$"
   mv -f "$EXP2_ORIGINAL_BIN/.$name.$$" "$EXP2_ORIGINAL_BIN/$name"
 done
+# rosrun: ROS's, but a script naming Python 2 in its first line, or without its
+# execute bit, starts as on the students' machines (gui/exp2_node_start.py;
+# roslaunch gets the same through sitecustomize.py)
+install -m 0755 "$HERE/rosrun.py" "$EXP2_ORIGINAL_BIN/.rosrun.$$"
+mv -f "$EXP2_ORIGINAL_BIN/.rosrun.$$" "$EXP2_ORIGINAL_BIN/rosrun"
 
 # gazebo_ros, xacro and controller_manager for the user's launch files, executable
 # (packages/README.md); env.py puts them first on ROS_PACKAGE_PATH.

@@ -2,7 +2,7 @@
 
 Python imports ``sitecustomize`` at start-up from the first directory of
 sys.path that has one; this directory is on PYTHONPATH only inside that
-environment. It does four things:
+environment. It does five things:
 
 1. runs the ``sitecustomize`` it shadows (Debian's, or one further down
    PYTHONPATH), so nothing the system configured is lost;
@@ -16,7 +16,11 @@ environment. It does four things:
    imported (see exp2_cv2_gui.py for why). cv2 itself is not imported here;
 4. unless EXP2_XMLRPC_END is 0, arranges for rospy's XML-RPC thread to end
    when the node shuts down, as it did under Python 2, instead of polling a
-   closed socket at 100 % of a core (exp2_xmlrpc_end.py).
+   closed socket at 100 % of a core (exp2_xmlrpc_end.py);
+5. unless EXP2_NODE_START is 0, has roslaunch start a node's file as the
+   students' machines did: one whose first line names Python 2
+   (``#!/usr/bin/python``) on this shell's python, one without its execute
+   bit as if it had it (exp2_node_start.py).
 
 Without a display nothing is changed: cv2.imshow then behaves as OpenCV's Qt
 backend does, which aborts the whole process ("could not connect to display",
@@ -56,3 +60,6 @@ if os.environ.get('EXP2_CV2_GUI_THREAD', '1') != '0' and _display_configured():
 if os.environ.get('EXP2_XMLRPC_END', '1') != '0':
     import exp2_xmlrpc_end
     exp2_xmlrpc_end.install()
+if os.environ.get('EXP2_NODE_START', '1') != '0':
+    import exp2_node_start
+    exp2_node_start.install()
