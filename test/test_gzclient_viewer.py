@@ -19,21 +19,24 @@ SHELL = os.path.join(REPO, 'tools', 'original_env', 'shell.sh')
 SETTLE = 12.0       # wall s after rviz opened: it has asked rospack by then
 
 
-def launch_with_viewer(tmp_path, script, ready, wall_seconds=180):
-    """Run ``script`` (bash) in the original-code shell under xvfb-run until a
-    line containing ``ready`` was printed and SETTLE s passed; its output."""
+def launch_with_viewer(tmp_path, script, ready, wall_seconds=180, xvfb=True):
+    """Run ``script`` (bash) in the original-code shell, under xvfb-run (else
+    with no display at all), until a line containing ``ready`` was printed and
+    SETTLE s passed; its output."""
     workspace = sourced_workspace()
     if workspace is None:
         pytest.skip('no sourced catkin workspace (run it through tools/run test)')
-    if shutil.which('xvfb-run') is None:
+    if xvfb and shutil.which('xvfb-run') is None:
         pytest.skip('needs xvfb-run (apt-get install xvfb)')
     env = dict(os.environ, ROS_HOME=str(tmp_path / 'ros_home'), PYTHONUNBUFFERED='1',
                EXP2_WS=workspace)
     env['PATH'] = '/usr/bin:' + env.get('PATH', '')
-    env.pop('DISPLAY', None)
+    for name in ('DISPLAY', 'WAYLAND_DISPLAY', 'QT_QPA_PLATFORM'):
+        env.pop(name, None)
     out_path = tmp_path / 'out.txt'
     with open(str(out_path), 'w') as out:
-        proc = subprocess.Popen(['xvfb-run', '-a', 'bash', SHELL, 'bash', '-c', script],
+        proc = subprocess.Popen((['xvfb-run', '-a'] if xvfb else []) +
+                                ['bash', SHELL, 'bash', '-c', script],
                                 env=env, stdout=out, stderr=subprocess.STDOUT,
                                 start_new_session=True)
     try:
