@@ -39,3 +39,21 @@ def test_a_machine_is_its_states_with_the_active_one_marked():
                      ('    KITCHEN   [go -> GARDEN]', False),
                      ('  > GARDEN   [go -> KITCHEN]', True)]
     assert render(lines).shape[0] > 3 * 20
+
+
+def test_gzclient_finds_a_models_urdf_by_its_links_and_locks_visuals_to_them():
+    import os
+    from exp_assignment2.launch_surface import robot_drawing
+    here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    with open(os.path.join(here, 'fixtures', 'spawned_robot.urdf')) as f:
+        text = f.read()
+    params = {'/robot_description': text, '/robot2/robot_description': text,
+              '/use_sim_time': True, '/broken_description': '<robot name="x"><link/></robot>'}
+    found = robot_drawing.find_descriptions(sorted(params), params.get)
+    assert sorted(found) == ['/robot2/robot_description', '/robot_description']
+    links = {'base_link', 'left_wheel', 'right_wheel', 'head', 'cam_link'}
+    assert robot_drawing.match(links, found)[0] == '/robot_description'
+    assert robot_drawing.match(links - {'head'}, found) is None
+    markers = robot_drawing.robot_markers('robot', found['/robot_description'])
+    assert [(m.header.frame_id, m.frame_locked) for m in markers] == [
+        ('gazebo/robot/base_link', True), ('gazebo/robot/head', True)]
