@@ -134,16 +134,15 @@ def test_an_installed_stl_mesh_is_used_as_it_is(tmp_path):
     assert w.notes == []
 
 
-def test_an_installed_collada_mesh_needs_a_known_size(tmp_path):
+def test_an_installed_collada_mesh_of_an_unknown_model_is_the_default_box(tmp_path):
     (tmp_path / 'crate' / 'meshes').mkdir(parents=True)
     (tmp_path / 'crate' / 'meshes' / 'crate.dae').write_text('<COLLADA/>')
     mesh = '<mesh><uri>model://crate/meshes/crate.dae</uri></mesh>'
-    with pytest.raises(SdfError) as err:
-        read_world(world(box_model('m', mesh)), model_path=[str(tmp_path)])
-    assert str(err.value) == (
-        "world/model[m]/link[link]/visual[visual]/geometry/mesh: model://crate/meshes/crate.dae "
-        "is a mesh format the simulator does not load (STL and OBJ only), and 'crate' has no "
-        "known size in config/gazebo_model_sizes.yaml: add it there (docs/original_code.md)")
+    w = read_world(world(box_model('m', mesh)), model_path=[str(tmp_path)])
+    assert w.notes == [
+        'model://crate/meshes/crate.dae is COLLADA, which the simulator does not load: a 1.00 '
+        'x 1.00 x 1.00 m box stands in (the default for a model not in '
+        'config/gazebo_model_sizes.yaml; seen, not collided with), in 1 model: m']
 
 
 # what cannot be read

@@ -1,6 +1,7 @@
 """Put the launch-surface packages (packages/: gazebo_ros, xacro,
-controller_manager, image_transport) where roslaunch can run them, and print
-that directory.
+controller_manager, image_transport, media_export, and rqt_image_view and
+smach_viewer where no real one is installed) where roslaunch can run them, and
+print that directory.
 
     /usr/bin/python3 launch_packages.py WORKSPACE   -> WORKSPACE/original_env_packages/<hash>
 
@@ -24,14 +25,30 @@ PACKAGES = os.path.join(HERE, 'packages')
 EXECUTABLES = ('gazebo_ros/scripts/gzserver', 'gazebo_ros/scripts/debug',
                'gazebo_ros/scripts/gzclient', 'gazebo_ros/scripts/spawn_model',
                'controller_manager/scripts/spawner', 'xacro/xacro',
-               'image_transport/scripts/republish')
+               'image_transport/scripts/republish', 'rqt_image_view/scripts/rqt_image_view',
+               'smach_viewer/scripts/smach_viewer.py')
 ALIASES = {'xacro/xacro.py': 'xacro/xacro'}
+# GUI tools a user's launch file may start: stand-ins only where ROS has none
+# (Debian has neither); a real one is never shadowed
+IF_MISSING = ('rqt_image_view', 'smach_viewer')
 
 
-def digest(source=PACKAGES):
-    """A hash of every file's path and content under ``source``."""
-    h = hashlib.sha1()
+def installed(name):
+    """Is a real package ``name`` on ROS_PACKAGE_PATH (outside this folder)?"""
+    import rospkg
+    try:
+        path = rospkg.RosPack().get_path(name)
+    except rospkg.ResourceNotFound:
+        return False
+    return not os.path.realpath(path).startswith(os.path.realpath(PACKAGES))
+
+
+def digest(source=PACKAGES, left_out=()):
+    """A hash of every file's path and content under ``source``, but ``left_out``."""
+    h = hashlib.sha1(' '.join(left_out).encode())
     for root, dirs, files in os.walk(source):
+        if os.path.relpath(root, source).split(os.sep)[0] in left_out:
+            continue
         dirs.sort()
         for name in sorted(files):
             path = os.path.join(root, name)
@@ -41,21 +58,25 @@ def digest(source=PACKAGES):
     return h.hexdigest()[:16]
 
 
-def install(workspace, source=PACKAGES):
+def install(workspace, source=PACKAGES, left_out=None):
     """The directory holding the packages, executable, made if needed."""
+    if left_out is None:
+        left_out = tuple(name for name in IF_MISSING if installed(name))
     parent = os.path.join(workspace, 'original_env_packages')
-    target = os.path.join(parent, digest(source))
+    target = os.path.join(parent, digest(source, left_out))
     if os.path.isdir(target):
         return target
     os.makedirs(parent, exist_ok=True)
     scratch = tempfile.mkdtemp(prefix='.new-', dir=parent)
     try:
         made = os.path.join(scratch, 'packages')
-        shutil.copytree(source, made)
+        shutil.copytree(source, made, ignore=lambda d, names: [
+            n for n in names if os.path.realpath(d) == os.path.realpath(source) and n in left_out])
         for alias, original in ALIASES.items():
             shutil.copy(os.path.join(made, original), os.path.join(made, alias))
         for path in EXECUTABLES + tuple(ALIASES):
-            os.chmod(os.path.join(made, path), 0o755)
+            if path.split('/')[0] not in left_out:
+                os.chmod(os.path.join(made, path), 0o755)
         try:
             os.rename(made, target)
         except OSError:

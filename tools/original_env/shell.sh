@@ -4,10 +4,11 @@
 # process's environment changes).
 #   bash tools/original_env/shell.sh                 interactive shell
 #   bash tools/original_env/shell.sh CMD [ARGS...]   run CMD in it
-#   bash tools/original_env/shell.sh --package DIR [CMD...]
+#   bash tools/original_env/shell.sh --package DIR [--with MORE]... [CMD...]
 #       with the user's own package DIR built in an overlay workspace
 #       (overlay/build.py): exp_assignment2 is then theirs, this one is
-#       exp_assignment2_sim
+#       exp_assignment2_sim; each --with MORE (a catkin package, or a directory
+#       of them) is built beside it, as what the class had installed
 # It installs what the original imports and Debian can give (tf, scipy;
 # imutils from PyPI), sources the catkin workspace, and sets PYTHONPATH so
 # that cv2's HighGUI runs on one thread (the original calls cv2.imshow from
@@ -34,11 +35,23 @@ log() { printf '[original-env] %s\n' "$*" >&2; }
 source "$HERE/../install.sh"
 
 PACKAGE_DIR=
-case "${1:-}" in
-  --package) [ $# -ge 2 ] || { log "--package needs the directory of your package"; exit 2; }
-             PACKAGE_DIR=$2; shift 2 ;;
-  --package=*) PACKAGE_DIR=${1#--package=}; shift ;;
-esac
+WITH_DIRS=()    # --with DIR: more catkin packages built beside it (a class's own packages)
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --package) [ $# -ge 2 ] || { log "--package needs the directory of your package"; exit 2; }
+               PACKAGE_DIR=$2; shift 2 ;;
+    --package=*) PACKAGE_DIR=${1#--package=}; shift ;;
+    --with) [ $# -ge 2 ] || { log "--with needs the directory of a catkin package"; exit 2; }
+            WITH_DIRS+=("$2"); shift 2 ;;
+    --with=*) WITH_DIRS+=("${1#--with=}"); shift ;;
+    *) break ;;
+  esac
+done
+# --with alone: the first of them is built as --package would be
+if [ -z "$PACKAGE_DIR" ] && [ ${#WITH_DIRS[@]} -gt 0 ]; then
+  PACKAGE_DIR=${WITH_DIRS[0]}
+  WITH_DIRS=("${WITH_DIRS[@]:1}")
+fi
 
 # Installs are skipped when present, so this is cheap after the first run.
 install_debian original-env "${APT_PACKAGES[@]}"
@@ -55,7 +68,10 @@ source "$WS/devel/setup.bash"
 export ROS_HOME="${ROS_HOME:-$WS/ros_home}"
 
 if [ -n "$PACKAGE_DIR" ]; then
-  overlay_env=$(/usr/bin/python3 "$HERE/overlay/build.py" --workspace "$WS" "$PACKAGE_DIR") || exit 1
+  with_args=()
+  for dir in "${WITH_DIRS[@]}"; do with_args+=(--with "$dir"); done
+  overlay_env=$(/usr/bin/python3 "$HERE/overlay/build.py" --workspace "$WS" "${with_args[@]}" \
+                "$PACKAGE_DIR") || exit 1
   eval "$overlay_env"
 fi
 
@@ -67,10 +83,16 @@ fi
 # file in the package would be one catkin does not install.
 export EXP2_ORIGINAL_BIN="$WS/original_env_bin"
 mkdir -p "$EXP2_ORIGINAL_BIN"
-for name in python python3; do
+# python2 too: `#!/usr/bin/env python2` ran on the students' machines.
+for name in python python2 python3; do
   install -m 0755 "$HERE/python_launcher.sh" "$EXP2_ORIGINAL_BIN/.$name.$$"
   mv -f "$EXP2_ORIGINAL_BIN/.$name.$$" "$EXP2_ORIGINAL_BIN/$name"
 done
+# rosrun: ROS's, but a script naming Python 2 in its first line, or without its
+# execute bit, starts as on the students' machines (gui/exp2_node_start.py;
+# roslaunch gets the same through sitecustomize.py)
+install -m 0755 "$HERE/rosrun.py" "$EXP2_ORIGINAL_BIN/.rosrun.$$"
+mv -f "$EXP2_ORIGINAL_BIN/.rosrun.$$" "$EXP2_ORIGINAL_BIN/rosrun"
 
 # gazebo_ros, xacro and controller_manager for the user's launch files, executable
 # (packages/README.md); env.py puts them first on ROS_PACKAGE_PATH.

@@ -2,8 +2,11 @@
 
 With a display, rviz opens with the package's config (:mod:`.viewer`), and
 this node broadcasts the models' and links' poses from ``/gazebo/model_states``
-and ``/gazebo/link_states`` as TF frames for it, at most 20 times a second;
-closing the window ends the node, as closing Gazebo's client does. Without a
+and ``/gazebo/link_states`` as TF frames for it, at most 20 times a second,
+and draws each robot spawned from a URDF on the parameter server from that
+URDF, its links moving with their frames (:mod:`.robot_drawing`, on
+``/gazebo_gui/robot_markers``); closing the window ends the node, as closing
+Gazebo's client does. Without a
 display it says so in one line and waits until it is stopped (SIGINT or
 SIGTERM, :mod:`.stopping`), so a launch file's ``gui:=true`` works headless.
 """
@@ -16,14 +19,17 @@ import rospy
 import tf2_ros
 from gazebo_msgs.msg import LinkStates, ModelStates
 from geometry_msgs.msg import TransformStamped
+from visualization_msgs.msg import MarkerArray
 
-from exp_assignment2.launch_surface import viewer
+from exp_assignment2.launch_surface import robot_drawing, viewer
 from exp_assignment2.launch_surface.stopping import Stop
 
 CONFIG = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..',
                                        '..', 'tools', 'original_env', 'packages', 'gazebo_ros',
                                        'rviz', 'gzclient.rviz'))
 PERIOD = 0.05       # wall s between two broadcasts of the same topic's frames
+LOOK = 2.0          # wall s between two looks for descriptions of models not drawn yet
+MARKERS = '/gazebo_gui/robot_markers'
 
 
 class FrameBroadcaster(object):
@@ -56,6 +62,44 @@ class FrameBroadcaster(object):
             self.tf.sendTransform(out)
 
 
+class RobotDrawer(object):
+    """Draws the models that have a URDF on the parameter server (robot_drawing)."""
+
+    def __init__(self):
+        self.pub = rospy.Publisher(MARKERS, MarkerArray, queue_size=1, latch=True)
+        self.drawn, self.undrawn, self.last_look = {}, set(), 0.0
+        rospy.Subscriber('/gazebo/link_states', LinkStates, self.on_links, queue_size=1)
+
+    def on_links(self, msg):
+        links = {}
+        for name in msg.name:
+            model, _, link = name.partition('::')
+            links.setdefault(model, set()).add(link)
+        gone = set(self.drawn) - set(links)
+        new = set(links) - set(self.drawn) - self.undrawn
+        if not gone and not new and not (self.undrawn and
+                                          time.monotonic() - self.last_look > LOOK):
+            return
+        self.undrawn = (self.undrawn | new) & set(links)
+        for model in gone:
+            del self.drawn[model]
+        if self.undrawn:
+            self.last_look = time.monotonic()
+            descriptions = robot_drawing.find_descriptions(rospy.get_param_names(),
+                                                           rospy.get_param)
+            for model in sorted(self.undrawn):
+                found = robot_drawing.match(links[model], descriptions)
+                if found is not None:
+                    self.drawn[model] = found
+                    self.undrawn.discard(model)
+                    rospy.loginfo('gzclient: drawing %s from %s (%d links)', model, found[0],
+                                  len(found[1].links))
+        markers = [robot_drawing.delete_all()]
+        for model in sorted(self.drawn):
+            markers += robot_drawing.robot_markers(model, self.drawn[model][1], len(markers))
+        self.pub.publish(MarkerArray(markers=markers))
+
+
 def main():
     """The gzclient executable (Gazebo's client options are accepted and unused)."""
     stop = Stop()
@@ -68,6 +112,7 @@ def main():
         rospy.signal_shutdown('gzclient stopped')
         return 0
     FrameBroadcaster()
+    RobotDrawer()
     name = rospy.get_name().rsplit('/', 1)[-1] + '_rviz'
     rviz = subprocess.Popen(['rviz', '-d', CONFIG, '__name:=' + name])
     rospy.loginfo('gzclient: rviz on display %s (%s)', display, CONFIG)

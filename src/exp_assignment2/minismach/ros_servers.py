@@ -1,27 +1,11 @@
 """smach_ros's server side over :mod:`exp_assignment2.minismach`:
 :class:`ActionServerWrapper` (a container served as an action) and
-:class:`IntrospectionServer` (smach_viewer's, kept with its signature; it
-publishes nothing: smach_viewer is not in Debian either). The states are in
-:mod:`.ros_states`, which re-exports these."""
+:class:`IntrospectionServer` (what smach_viewer reads, :mod:`.introspection`).
+The states are in :mod:`.ros_states`, which re-exports these."""
 import rospy
 
+from .introspection import IntrospectionServer  # noqa: F401  (smach_ros' name)
 from .states import UserData
-
-
-class IntrospectionServer(object):
-    """``IntrospectionServer(server_name, state, path)``; start, stop and clear do nothing."""
-
-    def __init__(self, server_name, state, path):
-        self._server_name, self._state, self._path = server_name, state, path
-
-    def start(self):
-        pass
-
-    def stop(self):
-        pass
-
-    def clear(self):
-        pass
 
 
 class ActionServerWrapper(object):

@@ -68,7 +68,11 @@ def yield_to_nodes():
 def sdf_to_urdf(text, name):
     """spawn_sdf_model's model as URDF text (ValueError saying why not)."""
     from exp_assignment2.sim import sdf
-    return sdf.model_to_urdf(text, name)
+    notes = []
+    urdf = sdf.model_to_urdf(text, name, notes=notes)
+    for note in notes:
+        rospy.logwarn('simulator: %s', note)
+    return urdf
 
 
 class SimulatorNode(object):
@@ -149,6 +153,8 @@ class SimulatorNode(object):
         world = sdf.read_world(path or EMPTY_WORLD)
         for note in world.notes:
             rospy.loginfo('simulator: %s', note)
+        for warning in world.warnings:
+            rospy.logwarn('simulator: %s', warning)
         for model in world.models:
             self.engine.spawn(model.name, model.urdf, model.pose,
                               grid=model.name == 'ground_plane')

@@ -47,9 +47,9 @@ class SdfWorld(object):
     ``gravity`` (x, y, z), ``physics`` (dict of ``<physics>`` numbers such as
     max_step_size, real_time_factor) and ``notes`` (the stand-ins used)."""
 
-    def __init__(self, name, models, gravity, physics, notes):
+    def __init__(self, name, models, gravity, physics, notes, warnings=()):
         self.name, self.models, self.gravity = name, models, gravity
-        self.physics, self.notes = physics, notes
+        self.physics, self.notes, self.warnings = physics, notes, list(warnings)
 
 
 def read_world(path_or_text, sizes=None, model_path=None):
@@ -79,7 +79,7 @@ def read_world(path_or_text, sizes=None, model_path=None):
     saved = {} if state is None else {
         m.get('name'): pose_of(m, 'world/state/model[%s]' % m.get('name'))
         for m in state.findall('model') if m.find('pose') is not None}
-    models, names, skipped = [], set(), []
+    models, names, skipped, warnings = [], set(), [], []
     for child in world:
         context.model = child.get('name') or child.findtext('name', '') or \
             child.findtext('uri', '')
@@ -99,11 +99,12 @@ def read_world(path_or_text, sizes=None, model_path=None):
                                                                           model.name))
         names.add(model.name)
         urdf = model_urdf(model)
+        warnings.extend(model.warnings)
         pose = saved.get(model.name, model.pose)
         models.append(WorldModel(model.name, urdf, pose_tuple(pose),
                                  model.static or model.fixed_to_world))
     return SdfWorld(world.get('name', 'default'), models, gravity, physics,
-                    context.notes() + skipped)
+                    context.notes() + skipped, warnings)
 
 
 def _floats_or_error(text, where, count=3):
@@ -128,7 +129,7 @@ def _one_model(sdf_text):
 def model_to_urdf(sdf_text, name=None, sizes=None, model_path=None, notes=None):
     """URDF text of the one model in ``sdf_text``, named ``name`` (default: the
     model's). The model's own ``<pose>`` is not part of it (:func:`model_pose`);
-    stand-in lines are appended to ``notes`` when it is a list."""
+    stand-in lines and warnings are appended to ``notes`` when it is a list."""
     elem = _one_model(sdf_text)
     context = Sources(sizes, model_path, os.getcwd())
     context.model = name or elem.get('name', '')
@@ -140,9 +141,10 @@ def model_to_urdf(sdf_text, name=None, sizes=None, model_path=None, notes=None):
             raise SdfError('sdf: the include is a light, not a model')
     if name:
         model.name = name
+    urdf = model_urdf(model)
     if notes is not None:
-        notes.extend(context.notes())
-    return model_urdf(model)
+        notes.extend(context.notes() + model.warnings)
+    return urdf
 
 
 def model_pose(sdf_text):

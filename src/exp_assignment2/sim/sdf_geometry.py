@@ -123,10 +123,10 @@ def colour_of(visual, where):
     return GAZEBO_MATERIALS.get(name, DEFAULT_RGBA)
 
 
-def shapes_of(geometry_parent, where, context):
-    """The ``<geometry>`` of a visual or collision as [(4x4 offset, (kind,
-    params), rgba)]: what URDF shapes stand for it, placed in the element's
-    frame; rgba is a stand-in's own colour, else None."""
+def shapes_of(geometry_parent, where, context, part='visual'):
+    """The ``<geometry>`` of a visual or collision (``part``) as [(4x4 offset,
+    (kind, params), rgba)]: what URDF shapes stand for it, placed in the
+    element's frame; rgba is a stand-in's own colour, else None."""
     geometry = geometry_parent.find('geometry')
     where += '/geometry'
     if geometry is None or len(geometry) == 0:
@@ -150,7 +150,7 @@ def shapes_of(geometry_parent, where, context):
     if kind == 'plane':
         return [_plane(shape, where + '/plane')]
     if kind == 'mesh':
-        return [_mesh(shape, where + '/mesh', context)]
+        return _mesh(shape, where + '/mesh', context, part)
     raise SdfError('%s: unknown shape <%s>; accepted: box, cylinder, sphere, plane, mesh'
                    % (where, kind))
 
@@ -187,16 +187,18 @@ def _axis_angle(axis, angle):
     return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k.dot(k)
 
 
-def _mesh(shape, where, context):
+def _mesh(shape, where, context, part):
     uri = shape.findtext('uri', '').strip()
     if not uri:
         raise SdfError('%s: no <uri>' % where)
     scale = child_floats(shape, 'scale', 3, where, (1, 1, 1))
     path = context.mesh_file(uri)
     if path is not None and os.path.splitext(path)[1].lower() in MESH_FILE_TYPES:
-        return np.eye(4), ('mesh', {'filename': path, 'scale': scale}), None
+        return [(np.eye(4), ('mesh', {'filename': path, 'scale': scale}), None)]
     stand_in = context.stand_in(uri, where, installed=path is not None)
+    if stand_in.get('default') and part == 'collision':
+        return []       # a guessed box must not stop a robot where the real mesh would not
     offset = np.eye(4)
     offset[:3, 3] = [c * s for c, s in zip(stand_in['center'], scale)]
     size = [abs(v * s) for v, s in zip(stand_in['size'], scale)]
-    return offset, ('box', {'size': _positive(size, where + '/scale')}), stand_in['rgba']
+    return [(offset, ('box', {'size': _positive(size, where + '/scale')}), stand_in['rgba'])]

@@ -32,6 +32,7 @@ class Model(object):
     def __init__(self, name, pose, static):
         self.name, self.pose, self.static = name, pose, static
         self.links, self.joints, self.plugins, self.fixed_to_world = OrderedDict(), [], [], False
+        self.warnings = []      # what model_urdf changed, one line each
 
 
 class Link(object):
@@ -39,8 +40,8 @@ class Link(object):
     6 inertia values), ``visuals`` [(name, 4x4, shape, rgba)], ``collisions``
     [(name, 4x4, shape)], ``sensors`` (elements), ``extras`` (gazebo tags)."""
 
-    def __init__(self, name, pose):
-        self.name, self.pose = name, pose
+    def __init__(self, name, pose, where=''):
+        self.name, self.pose, self.where = name, pose, where or 'link[%s]' % name
         self.inertial = (1.0, np.eye(4), (1.0, 0.0, 0.0, 1.0, 0.0, 1.0))   # SDF's defaults
         self.visuals, self.collisions, self.sensors, self.extras = [], [], [], {}
 
@@ -96,13 +97,14 @@ def _scoped(prefix, link):
 def _read_link(elem, where, context):
     if not elem.get('name'):
         raise SdfError('%s: a link needs a name' % where)
-    link = Link(elem.get('name'), pose_of(elem, where))
+    link = Link(elem.get('name'), pose_of(elem, where), where)
     inertial = elem.find('inertial')
     if inertial is not None:
         w = where + '/inertial'
         mass = child_floats(inertial, 'mass', 1, w, (1.0,))[0]
-        if mass <= 0:
-            raise SdfError('%s/mass: must be positive, not %g' % (w, mass))
+        # 0 is judged by model_urdf, once the model is known to be static or not
+        if mass < 0:
+            raise SdfError('%s/mass: must not be negative, not %g' % (w, mass))
         block = inertial.find('inertia')
         values = link.inertial[2]
         if block is not None:
@@ -115,7 +117,7 @@ def _read_link(elem, where, context):
             w = '%s/%s[%s]' % (where, kind, part.get('name', ''))
             pose = pose_of(part, w)
             coloured = kind == 'visual' and part.find('material') is not None
-            for offset, shape, own in shapes_of(part, w, context):
+            for offset, shape, own in shapes_of(part, w, context, kind):
                 rgba = colour_of(part, w) if coloured else own or DEFAULT_RGBA
                 out.append((part.get('name', kind), pose.dot(offset), shape, rgba))
     link.sensors = [(sensor, pose_of(sensor, '%s/sensor[%s]' % (where, sensor.get('name', ''))))
@@ -173,6 +175,7 @@ def model_urdf(model):
             raise SdfError('%s: link %r already has a parent; a model must be a tree'
                            % (joint['where'], joint['child']))
         children[joint['child']] = joint
+    _check_masses(model, root, children)
     for link in links[1:]:      # a link without a joint is fixed to the root, where it is
         children.setdefault(link.name, {'name': 'fixed_' + link.name, 'type': 'fixed',
                                         'parent': root.name, 'child': link.name,
@@ -202,6 +205,34 @@ def model_urdf(model):
         _write_gazebo_link(robot, link, np.linalg.inv(frames[link.name]).dot(link.pose))
     ET.indent(robot)
     return ET.tostring(robot, encoding='unicode') + '\n'
+
+
+def _check_masses(model, root, joints):
+    """Inertials as Gazebo 11 uses them. A static model's are never used (ODE
+    makes no body for a static link), so they are not checked: one of mass 0
+    gets SDF's defaults. A dynamic link of mass 0 is refused by ODE
+    (``ODELink::UpdateMass``: 'Setting custom link ... mass to zero!'), while
+    sdformat's URDF reader lumps a massless link on a fixed joint into its
+    parent: such a link is kept where it is, adding no mass, with one warning;
+    one that moves on its own (the root, a moving joint) is refused."""
+    for link in model.links.values():
+        if link.inertial[0] > 0:
+            continue
+        if model.static or model.fixed_to_world:
+            link.inertial = (1.0, np.eye(4), (1.0, 0.0, 0.0, 1.0, 0.0, 1.0))
+            continue
+        joint = joints.get(link.name)
+        if link is root or (joint is not None and joint['type'] != 'fixed'):
+            how = 'the root link' if link is root else 'on %s joint %s' % (joint['type'],
+                                                                          joint['name'])
+            raise SdfError('%s/inertial/mass: 0 on a dynamic link (%s): Gazebo refuses it too '
+                           "(ODE: 'Setting custom link mass to zero!'); give it a mass, or make "
+                           'the model static' % (link.where, how))
+        parent = joint['parent'] if joint is not None else root.name
+        link.inertial = (0.0, np.eye(4), (0.0,) * 6)
+        model.warnings.append('%s: mass 0 on a dynamic link: it moves with link %s as if '
+                              'lumped into it (Gazebo\'s fixed-joint reduction), adding no mass'
+                              % (link.where, parent))
 
 
 def _num(value):

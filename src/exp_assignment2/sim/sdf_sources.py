@@ -23,6 +23,10 @@ SIZES_FILE = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__fil
                                            'gazebo_model_sizes.yaml'))
 SIZES_NAME = 'config/gazebo_model_sizes.yaml'
 MAX_INCLUDE_DEPTH = 8
+# A mesh of a model the table does not know: a visual box of this size, standing
+# on the mesh's origin, and no collision (docs/original_env_supplies.md)
+DEFAULT_MESH_BOX = {'size': [1.0, 1.0, 1.0], 'center': [0.0, 0.0, 0.5], 'rgba': DEFAULT_RGBA,
+                    'static': True, 'mass': 1.0, 'default': True}
 GROUND_PLANE = """<model name="ground_plane"><static>true</static><link name="link">
 <collision name="collision"><geometry><plane><normal>0 0 1</normal><size>100 100</size></plane>
 </geometry></collision><visual name="visual"><geometry><plane><normal>0 0 1</normal>
@@ -91,13 +95,7 @@ class Sources(object):
         """The size-table entry that stands in for a mesh, recorded for the notes."""
         name = (uri[len('model://'):].split('/')[0] if uri.startswith('model://')
                 else os.path.splitext(os.path.basename(uri))[0])
-        entry = self.sizes.get(name)
-        if entry is None:
-            why = ('is a mesh format the simulator does not load (STL and OBJ only)' if installed
-                   else 'is not installed')
-            raise SdfError('%s: %s %s, and %r has no known size in %s: add it there '
-                           '(docs/original_code.md)' % (where, uri, why, name,
-                                                        SIZES_NAME))
+        entry = self.sizes.get(name, DEFAULT_MESH_BOX)
         self.used.setdefault(uri, [entry, installed, []])
         if self.model not in self.used[uri][2]:
             self.used[uri][2].append(self.model)
@@ -185,7 +183,9 @@ class Sources(object):
             lines.append('%s %s: a %s m box stands in (%s), in %d model%s: %s' % (
                 uri, 'is COLLADA, which the simulator does not load' if installed
                 else 'is not installed',
-                ' x '.join('%.2f' % v for v in entry['size']), SIZES_NAME,
+                ' x '.join('%.2f' % v for v in entry['size']),
+                'the default for a model not in %s; seen, not collided with' % SIZES_NAME
+                if entry.get('default') else SIZES_NAME,
                 len(models), '' if len(models) == 1 else 's', named))
         return lines
 

@@ -2,7 +2,7 @@
 
 Python imports ``sitecustomize`` at start-up from the first directory of
 sys.path that has one; this directory is on PYTHONPATH only inside that
-environment. It does five things:
+environment. It does six things:
 
 1. runs the ``sitecustomize`` it shadows (Debian's, or one further down
    PYTHONPATH), so nothing the system configured is lost;
@@ -16,9 +16,12 @@ environment. It does five things:
    imported (see exp2_cv2_gui.py for why). cv2 itself is not imported here;
 4. unless EXP2_XMLRPC_END is 0, arranges for rospy's XML-RPC thread to end
    when the node shuts down, as it did under Python 2, instead of polling a
-   closed socket at 100 % of a core (exp2_xmlrpc_end.py).
-
-5. when EXP2_SEED is set (a run of the grader, with its seed), seeds Python's
+   closed socket at 100 % of a core (exp2_xmlrpc_end.py);
+5. unless EXP2_NODE_START is 0, has roslaunch start a node's file as the
+   students' machines did: one whose first line names Python 2
+   (``#!/usr/bin/python``) on this shell's python, one without its execute
+   bit as if it had it (exp2_node_start.py).
+6. when EXP2_SEED is set (a run of the grader, with its seed), seeds Python's
    ``random`` with it, so that a run can be repeated as it was.
 
 Without a display nothing is changed: cv2.imshow then behaves as OpenCV's Qt
@@ -59,6 +62,9 @@ if os.environ.get('EXP2_CV2_GUI_THREAD', '1') != '0' and _display_configured():
 if os.environ.get('EXP2_XMLRPC_END', '1') != '0':
     import exp2_xmlrpc_end
     exp2_xmlrpc_end.install()
+if os.environ.get('EXP2_NODE_START', '1') != '0':
+    import exp2_node_start
+    exp2_node_start.install()
 if os.environ.get('EXP2_SEED', '').isdigit():
     import random
     random.seed(int(os.environ['EXP2_SEED']))

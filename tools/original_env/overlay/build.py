@@ -1,7 +1,11 @@
 #!/usr/bin/env python3
 """Build the user's package in an overlay workspace: original-env --package DIR.
 
-    build.py --workspace WS DIR      (run by shell.sh with WS sourced)
+    build.py --workspace WS [--with MORE]... DIR      (run by shell.sh with WS sourced)
+
+``--with MORE`` (original-env --with MORE) builds more catkin packages beside
+the user's in the same overlay: what a class had installed besides ROS (a
+course's packages), as a teacher's grading.yaml names them.
 
 prints shell code that puts the overlay in the environment (shell.sh evals
 it) and logs to stderr. The overlay is a catkin workspace chained on WS, in
@@ -60,8 +64,9 @@ def file_hash(paths):
     return digest.hexdigest()
 
 
-def overlay_dir(root, package_dir):
-    key = hashlib.sha1(package_dir.encode('utf-8', 'surrogateescape')).hexdigest()[:10]
+def overlay_dir(root, package_dir, more=()):
+    key = hashlib.sha1('\0'.join((package_dir,) + tuple(more)).encode(
+        'utf-8', 'surrogateescape')).hexdigest()[:10]
     return os.path.join(root, '%s-%s' % (os.path.basename(package_dir) or 'package', key))
 
 
@@ -88,11 +93,15 @@ def package_names(package_dir):
 class Overlay:
     """The overlay workspace of one user package directory."""
 
-    def __init__(self, package_dir, workspace, root):
+    def __init__(self, package_dir, workspace, root, more=()):
         self.package_dir = package_dir
+        self.more = tuple(more)         # --with: more package directories beside it
         self.workspace = workspace
-        self.path = overlay_dir(root, package_dir)
+        self.path = overlay_dir(root, package_dir, self.more)
         self.farm = os.path.join(self.path, 'src', os.path.basename(package_dir) or 'package')
+        # each --with directory in src/with_<n>_<name> (two may share a name)
+        self.more_farms = [os.path.join(self.path, 'src', 'with_%d_%s' % (
+            index, os.path.basename(d) or 'package')) for index, d in enumerate(self.more)]
         self.log_path = os.path.join(self.path, 'build.log')
         self.stamp_path = os.path.join(self.path, '.stamp')
         self.names_path = os.path.join(self.path, '.packages')
@@ -102,6 +111,7 @@ class Overlay:
         launch = [os.path.join(r, f) for r, _d, fs in os.walk(os.path.join(REPO, 'launch'))
                   for f in fs]
         parts = [self.package_dir, ' '.join(names), source_tree.content_hash(self.package_dir),
+                 ' '.join(d + '=' + source_tree.content_hash(d) for d in self.more),
                  _read(os.path.join(self.workspace, '.build_stamp')), file_hash(own + launch),
                  ' '.join(sorted(os.listdir(REPO)))]
         return hashlib.sha1('\n'.join(parts).encode('utf-8', 'surrogateescape')).hexdigest()
@@ -117,6 +127,8 @@ class Overlay:
             for space in ('build', 'devel', 'src'):
                 shutil.rmtree(os.path.join(self.path, space), ignore_errors=True)
         source_tree.link_farm(self.package_dir, self.farm)
+        for directory, farm in zip(self.more, self.more_farms):
+            source_tree.link_farm(directory, farm)
         debian_packages.install(debian_packages.TEMPLATE_BUILD)
         prefix = self.give_stand_ins()
         log('building %s in %s (full log: %s)' % (self.package_dir, self.path, self.log_path))
@@ -145,7 +157,8 @@ class Overlay:
         """Install Debian's packages for missing components, stand-ins for the rest."""
         prefix = os.path.join(self.path, 'stand_ins')
         shutil.rmtree(prefix, ignore_errors=True)
-        names = stand_ins.components_of_tree(self.farm)
+        names = sorted(set().union(*(stand_ins.components_of_tree(f)
+                                     for f in [self.farm] + self.more_farms)))
         probe = os.path.join(self.path, 'probe')
         missing = stand_ins.missing_components(names, probe, os.environ)
         candidates = [c for c in (debian_packages.candidate(n) for n in missing or ()) if c]
@@ -167,11 +180,13 @@ class Overlay:
 
     def to_user(self, path):
         """The user's path of a path in the overlay's source space, else None."""
-        for farm in (self.farm, os.path.realpath(self.farm)):
-            if path == farm or path.startswith(farm + '/'):
-                return self.package_dir + path[len(farm):]
-        if path == self.package_dir or path.startswith(self.package_dir + '/'):
-            return path
+        for directory, farm in zip((self.package_dir,) + self.more,
+                                   [self.farm] + self.more_farms):
+            for place in (farm, os.path.realpath(farm)):
+                if path == place or path.startswith(place + '/'):
+                    return directory + path[len(place):]
+            if path == directory or path.startswith(directory + '/'):
+                return path
         return None
 
     def write_own_package(self, names):
@@ -239,36 +254,49 @@ def _timed_out(_signum, _frame):
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--workspace', required=True, help='the sourced catkin workspace')
+    parser.add_argument('--with', dest='more', action='append', default=[], metavar='DIR',
+                        help='more catkin packages to build beside it (repeatable)')
     parser.add_argument('package_dir')
     args = parser.parse_args(argv)
     package_dir = os.path.realpath(args.package_dir)
-    if not os.path.isdir(package_dir):
-        log('--package %s: no such directory' % args.package_dir)
-        return 1
+    more = []
+    for given, option in [(args.package_dir, '--package')] + [(d, '--with') for d in args.more]:
+        if not os.path.isdir(given):
+            log('%s %s: no such directory' % (option, given))
+            return 1
+        if option == '--with' and os.path.realpath(given) not in more + [package_dir]:
+            more.append(os.path.realpath(given))
     workspace = os.path.realpath(args.workspace)
     root = os.environ.get('EXP2_OVERLAY_ROOT') or os.path.join(workspace, 'overlays')
     try:
         names = package_names(package_dir)
-        overlay = Overlay(package_dir, workspace, os.path.realpath(root))
-        for outside in (package_dir, REPO):
+        more_names = [n for d in more for n in package_names(d)]
+        twice = sorted(set(n for n in names + more_names if (names + more_names).count(n) > 1))
+        if twice:
+            raise BuildFailed('two packages are called %s: give each once (--package, --with)'
+                              % ', '.join(twice))
+        overlay = Overlay(package_dir, workspace, os.path.realpath(root), more)
+        for outside in [package_dir, REPO] + more:
             if overlay.path == outside or overlay.path.startswith(outside + '/'):
                 raise BuildFailed('the overlay %s would be inside %s: set EXP2_OVERLAY_ROOT'
                                   ' to a directory outside it' % (overlay.path, outside))
         with _Locked(os.path.join(overlay.path, '.lock')):
-            stamp = overlay.stamp(names)
+            stamp = overlay.stamp(names + more_names)
             if overlay.up_to_date(stamp):
                 log('overlay %s is up to date with %s' % (overlay.path, package_dir))
             else:
-                overlay.build(names, stamp)
+                overlay.build(names + more_names, stamp)
     except (BuildFailed, debian_packages.InstallFailed) as e:
         log('the build of %s failed: %s' % (package_dir, e))
         return 1
     except subprocess.TimeoutExpired as e:
         log('the build of %s failed: %s took more than %d s' % (package_dir, e.cmd[0], e.timeout))
         return 1
-    log('package %s from %s; this repository\'s package: %s'
-        % (', '.join(names), package_dir, sim_package.NAME))
-    print(overlay.shell_code(names))
+    log('package %s from %s%s; this repository\'s package: %s'
+        % (', '.join(names), package_dir, ''.join(
+            '; with %s from %s' % (', '.join(package_names(d)), d) for d in more),
+           sim_package.NAME))
+    print(overlay.shell_code(names + more_names))
     return 0
 
 

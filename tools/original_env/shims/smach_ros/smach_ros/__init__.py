@@ -5,7 +5,7 @@ only when ``import smach_ros`` failed there before (a real smach_ros always
 wins). SimpleActionState, ServiceState, MonitorState, ActionServerWrapper and
 IntrospectionServer come from ``exp_assignment2.minismach``'s ``ros_states``,
 ``ros_monitor`` and ``ros_servers`` (see them for what each does; the
-introspection server publishes nothing: smach_viewer is not in Debian).
+introspection server publishes what smach_viewer reads, in smach_msgs' stand-in).
 Beside a real smach, whose states they are not, only IntrospectionServer.
 """
 import importlib

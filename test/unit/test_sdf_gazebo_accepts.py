@@ -1,0 +1,100 @@
+"""What Gazebo 11 loads, the SDF reader loads (exp_assignment2.sim.sdf), no ROS:
+a static model's inertial is not checked, a massless link on a fixed joint is
+kept with one warning, a mesh of an unknown model gets the default box with one
+line; what would break the world stays refused.
+
+test/data/worlds/saved_shelter.world is a world as Gazebo saves one: a static,
+visual-only model of mass 0 whose mesh belongs to a model this package does
+not know, and a cart with a massless flag on a fixed joint.
+"""
+import os
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from exp_assignment2.sim.sdf import SdfError, model_to_urdf, read_world
+from sdf_helpers import ARM, box_model, world
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SAVED = os.path.join(os.path.dirname(HERE), 'data', 'worlds', 'saved_shelter.world')
+
+
+def _models(w):
+    return {m.name: ET.fromstring(m.urdf) for m in w.models}
+
+
+def test_a_world_gazebo_saved_loads_with_one_line_each_for_the_mesh_and_the_massless_link():
+    w = read_world(SAVED, model_path=[])
+    assert [m.name for m in w.models] == ['ground_plane', 'shelter', 'cart']
+    assert w.notes == [
+        'model://shelter_kit/meshes/shelter.dae is not installed: a 1.00 x 1.00 x 1.00 m box '
+        'stands in (the default for a model not in config/gazebo_model_sizes.yaml; seen, not '
+        'collided with), in 1 model: shelter']
+    assert w.warnings == [
+        'world/model[cart]/link[flag]: mass 0 on a dynamic link: it moves with link body as '
+        "if lumped into it (Gazebo's fixed-joint reduction), adding no mass"]
+
+
+def test_the_unknown_mesh_is_a_visual_box_of_the_default_size_scaled_and_no_collision():
+    shelter = _models(read_world(SAVED, model_path=[]))['shelter']
+    box = shelter.find('link/visual/geometry/box')
+    assert box.get('size') == '2 2 2'
+    assert shelter.find('link/visual/origin').get('xyz') == '0 0 1'
+    assert shelter.find('link/collision') is None
+    assert shelter.find('gazebo/static').text == 'true'
+
+
+def test_the_massless_flag_adds_no_mass_and_rides_on_its_parent(tmp_path):
+    import pybullet
+    w = read_world(SAVED, model_path=[])
+    cart = _models(w)['cart']
+    assert [l.find('inertial/mass').get('value') for l in cart.findall('link')] == ['4', '0']
+    client = pybullet.connect(pybullet.DIRECT)
+    try:
+        pybullet.setGravity(0, 0, -9.8, physicsClientId=client)
+        ground = pybullet.createCollisionShape(pybullet.GEOM_PLANE, physicsClientId=client)
+        pybullet.createMultiBody(0, ground, physicsClientId=client)
+        path = tmp_path / 'cart.urdf'
+        path.write_text([m for m in w.models if m.name == 'cart'][0].urdf)
+        body = pybullet.loadURDF(str(path), [0, 0, 0.2], physicsClientId=client)
+        for _ in range(500):
+            pybullet.stepSimulation(physicsClientId=client)
+        base = pybullet.getBasePositionAndOrientation(body, physicsClientId=client)[0]
+        flag = pybullet.getLinkState(body, 0, physicsClientId=client)[0]
+        assert base[2] == pytest.approx(0.1, abs=0.01)          # it fell and rests: dynamic
+        assert flag[2] - base[2] == pytest.approx(0.3, abs=0.01)
+    finally:
+        pybullet.disconnect(client)
+
+
+def test_a_static_model_inertia_is_not_checked():
+    text = world(box_model('m', extra='<inertial><mass>0</mass><inertia><ixx>0</ixx>'
+                                      '<iyy>0</iyy><izz>0</izz></inertia></inertial>'))
+    (model,) = read_world(text, model_path=[]).models
+    assert ET.fromstring(model.urdf).find('link/inertial/mass').get('value') == '1'
+
+
+@pytest.mark.parametrize('extra,message', [
+    ('<inertial><mass>-2</mass></inertial>',
+     'world/model[m]/link[link]/inertial/mass: must not be negative, not -2'),
+    ('<inertial><mass>nan</mass></inertial>',
+     "world/model[m]/link[link]/inertial/mass: the value must be 1 finite numbers, not 'nan'"),
+    ('<inertial><mass>0</mass></inertial>',
+     'world/model[m]/link[link]/inertial/mass: 0 on a dynamic link (the root link): Gazebo '
+     "refuses it too (ODE: 'Setting custom link mass to zero!'); give it a mass, or make the "
+     'model static'),
+])
+def test_what_would_break_the_world_is_still_refused(extra, message):
+    text = world(box_model('m', extra=extra).replace('<static>1</static>', ''))
+    with pytest.raises(SdfError) as err:
+        read_world(text, model_path=[])
+    assert str(err.value) == message
+
+
+def test_a_massless_link_on_a_moving_joint_is_refused():
+    upper = "<link name='upper'><pose>0 0 0.5 0 0 0</pose>"
+    assert upper in ARM
+    with pytest.raises(SdfError) as err:
+        model_to_urdf(ARM.replace(upper, upper + '<inertial><mass>0</mass></inertial>'))
+    assert str(err.value).startswith(
+        'model[arm]/link[upper]/inertial/mass: 0 on a dynamic link (on revolute joint shoulder)')
