@@ -131,6 +131,33 @@ def _cpp_broken(dest):
         f.write(text)
 
 
+MIRO_ORIGINAL = os.path.join(HERE, 'fixtures', 'miro_original')
+MIRO_README = """# MiRo
+
+Start the state manager first, then the rest:
+
+    rosrun exp_assignment2 miro_state_manager.py
+    roslaunch exp_assignment2 miro_user.launch
+"""
+
+
+def make_miro(dest):
+    """A MiRo submission in the original's shape (test/fixtures/miro_original's
+    four nodes and the user's launch file), for the miro profile."""
+    os.makedirs(os.path.join(dest, 'scripts'))
+    os.makedirs(os.path.join(dest, 'launch'))
+    for name in os.listdir(MIRO_ORIGINAL):
+        target = os.path.join(dest, 'launch' if name.endswith('.launch') else 'scripts', name)
+        shutil.copy(os.path.join(MIRO_ORIGINAL, name), target)
+        if name.endswith('.py'):
+            os.chmod(target, 0o755)
+    shutil.copy(os.path.join(BASE, 'package.xml'), os.path.join(dest, 'package.xml'))
+    shutil.copy(os.path.join(BASE, 'CMakeLists.txt'), os.path.join(dest, 'CMakeLists.txt'))
+    with open(os.path.join(dest, 'README.md'), 'w') as f:
+        f.write(MIRO_README)
+    return dest
+
+
 def make_folder(dest, names=None):
     """Write the fixture submissions named (default: all) into ``dest``."""
     os.makedirs(dest, exist_ok=True)

@@ -142,3 +142,24 @@ def test_the_report_is_made_again_without_running(graded):
     assert proc.returncode == 0, proc.stdout[-2000:]
     assert os.path.exists(os.path.join(graded['out'], 'index.html'))
     assert 'graded 8 submissions' in proc.stdout
+
+
+def test_a_miro_submission_under_the_miro_profile(tmp_path):
+    """The profile's world (miro_world.launch, as Stage was) first, then the
+    submission's README commands; its arrivals at the commanded targets."""
+    folder = tmp_path / 'miro_class'
+    grading_fixtures.make_miro(str(folder / 'miro_student'))
+    out = str(tmp_path / 'report')
+    proc = subprocess.run(GRADE + [str(folder), '--out', out, '--profile', 'miro',
+                                   '--duration', '60', '--real-time-factor', '2'],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          universal_newlines=True, timeout=900)
+    assert proc.returncode == 0, proc.stdout[-3000:]
+    with open(os.path.join(out, 'report.json')) as f:
+        run = json.load(f)['runs'][0]
+    assert run['commands'] == ['roslaunch exp_assignment2_sim miro_world.launch',
+                               'rosrun exp_assignment2 miro_state_manager.py',
+                               'roslaunch exp_assignment2 miro_user.launch']
+    assert run['verdict'] == 'passed', (run['reason'], run.get('checks'))
+    arrivals = {c['metric']: c['value'] for c in run['checks']}['arrivals']
+    assert arrivals >= 3

@@ -132,3 +132,15 @@ def test_no_package_and_two_packages(tmp_path):
     (tmp_path / 'deep' / 'x' / 'other').mkdir()
     with pytest.raises(SubmissionError, match='no package.xml at the top or one level down'):
         find_package(str(tmp_path / 'deep'))
+
+
+def test_only_the_repositorys_simulator_may_send_the_ground_truth(tmp_path):
+    from exp_assignment2.grading.truth import SIMULATOR, runs_our_simulator
+    assert os.path.exists(SIMULATOR)
+    link = tmp_path / 'scripts'
+    os.symlink(os.path.dirname(SIMULATOR), str(link))     # the overlay's link farm
+    assert runs_our_simulator(['/usr/bin/python3', str(link / 'simulator.py'), '__name:=x'])
+    fake = tmp_path / 'simulator.py'
+    fake.write_text('print("I am the simulator")')
+    assert not runs_our_simulator(['/usr/bin/python3', str(fake)])
+    assert not runs_our_simulator(['/usr/bin/python3', '-c', 'x', SIMULATOR + 'x'])

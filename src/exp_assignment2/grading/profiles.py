@@ -15,11 +15,11 @@ from exp_assignment2.grading.metrics import METRICS
 PROFILE_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.dirname(os.path.abspath(__file__))))), 'config', 'grading')
 REQUIRED = ('name', 'duration', 'default_commands', 'robot', 'checks')
-KEYS = {'name', 'title', 'duration', 'default_commands', 'delay', 'cpu_per_run',
+KEYS = {'name', 'title', 'duration', 'default_commands', 'world_commands', 'delay', 'cpu_per_run',
         'memory_limit_mb', 'process_limit', 'robot', 'ball', 'camera', 'record_topics',
         'checks'}
 CHECK_KEYS = {'name', 'metric', 'min', 'max', 'reach', 'joint', 'topic', 'tolerance'}
-DEFAULTS = {'title': '', 'delay': 5, 'cpu_per_run': 1.0, 'memory_limit_mb': 3000,
+DEFAULTS = {'title': '', 'world_commands': [], 'delay': 5, 'cpu_per_run': 1.0, 'memory_limit_mb': 3000,
             'process_limit': 512, 'ball': None, 'camera': None, 'record_topics': []}
 
 
@@ -74,6 +74,9 @@ def check(data, where='profile'):
     if not (isinstance(profile['default_commands'], list) and profile['default_commands']
             and all(isinstance(c, str) for c in profile['default_commands'])):
         raise ProfileError('%s: default_commands: a list of command lines' % where)
+    if not (isinstance(profile['world_commands'], list)
+            and all(isinstance(c, str) for c in profile['world_commands'])):
+        raise ProfileError('%s: world_commands: a list of command lines' % where)
     if not isinstance(profile['checks'], list) or not profile['checks']:
         raise ProfileError('%s: checks: a list of checks' % where)
     for i, item in enumerate(profile['checks']):

@@ -15,6 +15,7 @@ import threading
 import time
 
 from exp_assignment2.grading import cpu, verdicts
+from exp_assignment2.grading.commands import Start
 from exp_assignment2.grading.sandbox import Sandbox, SandboxError
 from exp_assignment2.grading.submissions import SubmissionError, package_name, unpack
 from exp_assignment2.grading.truth import TruthServer
@@ -25,6 +26,7 @@ REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.realpath(__file__)))))
 SHELL = os.path.join(REPO, 'tools', 'original_env', 'shell.sh')
 INSIDE = os.path.join(REPO, 'src', 'exp_assignment2', 'grading', 'inside.py')
+OWN_NAME, SIM_PACKAGE = 'exp_assignment2', 'exp_assignment2_sim'   # see overlay/build.py
 BUILD_LIMIT = 900.0          # wall s for a build
 START_SLACK = 120.0          # wall s on top of the duration: set-up, starting, ending
 WORK_LIMIT = 2 * 1024 ** 3   # bytes the work directory may hold
@@ -145,9 +147,16 @@ class Run(object):
         except SubmissionError as exc:
             result.update(verdict='not_built', reason='the submission: %s' % exc)
             return self._finish(result)
-        result['package'] = package_name(package_dir)
+        package = result['package'] = package_name(package_dir)
         if hasattr(self.start, 'resolve'):       # an archive's README, now unpacked
             self.start = self.start.resolve(package_dir)
+        # the world the assignment runs in (MiRo's: Stage's stand-in), then the
+        # submission's own; {sim} is this package's name beside the student's
+        names = {'package': package, 'sim': SIM_PACKAGE if package == OWN_NAME else OWN_NAME}
+        world = [c.format(**names) for c in self.settings.profile['world_commands']]
+        self.start = Start(world + [c.replace('{sim}', names['sim']) for c in self.start.commands],
+                           self.start.source + (' after the profile\'s world' if world else ''),
+                           self.start.notes)
         result.update(commands=self.start.commands, commands_from=self.start.source,
                       notes=list(self.start.notes))
         rtf = self.settings.real_time_factor

@@ -4,7 +4,9 @@ sandbox, where the simulator streams what happens
 
 Only the first connection from a simulator process is taken: the peer's
 process (its credentials, seen from outside the sandbox's namespaces) must
-run this package's simulator, or the connection is refused and counted.
+run this package's simulator script, the file in this repository (which the
+sandbox sees read-only) and not a copy, or the connection is refused and
+counted.
 What arrives is written as it arrives to the run's record, outside every
 directory the sandbox can write: states and topics to ``truth.jsonl``,
 frames to ``frames/`` as JPEG files.
@@ -18,18 +20,24 @@ import threading
 import time
 
 MAX_LINE = 8 * 1024 * 1024
-SIMULATOR_MARKS = ('scripts/simulator.py', '/gzserver', 'exp_assignment2.nodes.simulator')
+SIMULATOR = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.realpath(__file__))))), 'scripts', 'simulator.py')
 
 
 def peer_command(conn):
-    """The command line of the process at the other end of a Unix socket."""
+    """(pid, argv) of the process at the other end of a Unix socket."""
     creds = conn.getsockopt(socket.SOL_SOCKET, socket.SO_PEERCRED, struct.calcsize('3i'))
     pid = struct.unpack('3i', creds)[0]
     try:
         with open('/proc/%d/cmdline' % pid, 'rb') as f:
-            return pid, f.read().replace(b'\0', b' ').decode(errors='replace').strip()
+            return pid, [a.decode(errors='replace') for a in f.read().split(b'\0') if a]
     except OSError:
-        return pid, ''
+        return pid, []
+
+
+def runs_our_simulator(argv, script=SIMULATOR):
+    """Is the script this command runs the repository's simulator itself?"""
+    return any(arg.endswith('.py') and os.path.realpath(arg) == script for arg in argv[:3])
 
 
 class TruthServer(object):
@@ -38,8 +46,7 @@ class TruthServer(object):
 
     def __init__(self, path, record_dir, accept=None):
         self.path, self.record_dir = path, record_dir
-        self.accept_peer = accept or (lambda command: any(m in command
-                                                          for m in SIMULATOR_MARKS))
+        self.accept_peer = accept or runs_our_simulator
         os.makedirs(os.path.join(record_dir, 'frames'), exist_ok=True)
         if os.path.exists(path):
             os.unlink(path)
@@ -66,12 +73,12 @@ class TruthServer(object):
                 continue
             except OSError:
                 break
-            pid, command = peer_command(conn)
-            if self.simulator is not None or not self.accept_peer(command):
-                self.refused.append(command or 'pid %d' % pid)
+            pid, argv = peer_command(conn)
+            if self.simulator is not None or not self.accept_peer(argv):
+                self.refused.append(' '.join(argv) or 'pid %d' % pid)
                 conn.close()
                 continue
-            self.simulator = (pid, command)
+            self.simulator = (pid, ' '.join(argv))
             self.connected.set()
             threading.Thread(target=self._read, args=(conn,), name='truth-read',
                              daemon=True).start()
