@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The grader's benchmark: ``bash tools/run bench grade [--jobs 1 2 3 4]
-[--duration 200] [--count 10]``.
+[--duration 200] [--count 10] [--scheduler tcp://HOST:PORT] [--dask K]``.
 
 It grades the fixture folder (test/grading_fixtures.py, topped up with
 copies of the dog that works to ``--count`` submissions) once per ``--jobs``
@@ -10,6 +10,11 @@ achieved real-time factor, whether the verdicts are the same as at the first
 kind (simulator, ROS, the student's nodes, the grader's driver) and memory.
 The goal on a 2-core machine: ten submissions of 200 simulated seconds in
 at most 12 minutes of wall time, every run at a factor of at least 0.95.
+
+``--scheduler ADDRESS`` grades through that Dask scheduler's workers instead
+(the same figures). ``--dask K`` measures the scaling table's row on this
+machine: it starts a scheduler and one worker taking K runs, grades, then two
+workers taking K/2 each, grades again, and prints both.
 Run it on an otherwise idle machine: it measures wall time.
 """
 import argparse
@@ -36,11 +41,12 @@ def make_folder(dest, count):
     return dest
 
 
-def grade(folder, out, jobs, duration, rtf):
+def grade(folder, out, jobs, duration, rtf, scheduler=None):
     started = time.monotonic()
+    where = ['--scheduler', scheduler] if scheduler else ['--jobs', str(jobs)]
     proc = subprocess.run([sys.executable, os.path.join(REPO, 'scripts', 'grade.py'), folder,
-                           '--out', out, '--jobs', str(jobs), '--duration', str(duration),
-                           '--real-time-factor', str(rtf)],
+                           '--out', out, '--duration', str(duration),
+                           '--real-time-factor', str(rtf)] + where,
                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                           universal_newlines=True)
     wall = time.monotonic() - started
@@ -58,6 +64,9 @@ def main(argv):
     parser.add_argument('--count', type=int, default=10)
     parser.add_argument('--real-time-factor', type=float, default=1.0)
     parser.add_argument('--keep', help='keep the reports in this directory')
+    parser.add_argument('--scheduler', help='grade through this Dask scheduler\'s workers')
+    parser.add_argument('--dask', type=int, metavar='K',
+                        help='one worker with K runs against two with K/2 each, here')
     args = parser.parse_args(argv)
     scratch = args.keep or tempfile.mkdtemp(prefix='bench-grade-')
     folder = make_folder(os.path.join(scratch, 'class'), args.count)
@@ -67,14 +76,16 @@ def main(argv):
     print('%4s %8s %10s %8s %8s %8s %s' % ('jobs', 'wall s', 'subs/hour', 'rtf min',
                                           'rtf med', 'same', 'verdicts'))
     first, detail = None, None
-    for jobs in args.jobs:
+    if args.dask:
+        return dask_rows(args, folder, scratch, count)
+    for jobs in ([0] if args.scheduler else args.jobs):
         wall, report, summary = grade(folder, os.path.join(scratch, 'jobs%d' % jobs), jobs,
-                                      args.duration, args.real_time_factor)
+                                      args.duration, args.real_time_factor, args.scheduler)
         verdicts = {s['name']: s['verdict'] for s in report['submissions']}
         first = first or verdicts
         factors = [r['real_time_factor'] for r in report['runs'] if r.get('real_time_factor')]
-        print('%4d %8.0f %10.1f %8.2f %8.2f %8s %s' % (
-            jobs, wall, count * 3600.0 / wall, min(factors), statistics.median(factors),
+        print('%4s %8.0f %10.1f %8.2f %8.2f %8s %s' % (
+            jobs or 'dask', wall, count * 3600.0 / wall, min(factors), statistics.median(factors),
             'yes' if verdicts == first else 'NO', summary.split(': ', 1)[-1].split(';')[0]))
         print('     each run\'s real-time factor: ' + ', '.join(
             '%s %.2f' % (r['label'], r['real_time_factor']) for r in report['runs']
@@ -93,6 +104,60 @@ def main(argv):
                 kind, works['cpu_s'][kind], works['cpu_s'][kind] / max(1.0, works['wall_time']),
                 works['memory_mb'].get(kind, 0)))
     print('reports in %s' % scratch)
+
+
+def _row(label, wall, report, count):
+    factors = [r['real_time_factor'] for r in report['runs'] if r.get('real_time_factor')]
+    workers = {r['workers'][-1] for r in report['runs'] if r.get('workers')}
+    print('%-22s %8.0f %10.1f %8.2f %8.2f %8d' % (label, wall, count * 3600.0 / wall,
+                                                  min(factors), statistics.median(factors),
+                                                  len(workers)))
+
+
+def dask_rows(args, folder, scratch, count):
+    """The scaling row: one worker with K runs, then two with K/2 each."""
+    import socket
+
+    def free_port():
+        with socket.socket() as s:
+            s.bind(('127.0.0.1', 0))
+            return s.getsockname()[1]
+    port = free_port()
+    address = 'tcp://127.0.0.1:%d' % port
+    scheduler = subprocess.Popen(['dask-scheduler', '--host', '127.0.0.1', '--port', str(port),
+                                  '--dashboard-address', '127.0.0.1:%d' % free_port()],
+                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                 start_new_session=True)
+    print('%-22s %8s %10s %8s %8s %8s' % ('workers x runs', 'wall s', 'subs/hour', 'rtf min',
+                                          'rtf med', 'used'))
+    try:
+        for layout in ([args.dask], [args.dask // 2] * 2):
+            workers = [subprocess.Popen([sys.executable, '-m', 'exp_assignment2.grading.worker',
+                                         address, '--runs', str(k), '--no-nanny'],
+                                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                        start_new_session=True) for k in layout]
+            try:
+                _wait_workers(address, len(layout))
+                wall, report, _ = grade(folder, os.path.join(scratch, 'dask-%d' % len(layout)),
+                                        0, args.duration, args.real_time_factor, address)
+                _row('%d x %d' % (len(layout), layout[0]), wall, report, count)
+            finally:
+                for worker in workers:
+                    os.killpg(worker.pid, 9)
+                    worker.wait()
+    finally:
+        os.killpg(scheduler.pid, 9)
+    print('reports in %s' % scratch)
+
+
+def _wait_workers(address, count, timeout=120):
+    from distributed import Client
+    deadline = time.monotonic() + timeout
+    with Client(address, timeout=10) as client:
+        while len(client.scheduler_info()['workers']) != count:
+            if time.monotonic() > deadline:
+                raise SystemExit('the workers did not come up')
+            time.sleep(0.5)
 
 
 if __name__ == '__main__':
