@@ -94,8 +94,9 @@ def judge(work, record, result, profile):
                         ': ' + _last_line(text) if text else ''))
     if built[0].get('rc') != 0:
         text = read_log(work, 'logs/build.log', {})
+        # paths as the report has them: relative to the run's directory
         return dict(out, verdict='not_built', reason=build_error(text).replace(
-            os.path.join(work, 'src') + '/', ''))
+            os.path.join(work, 'src') + '/', '').replace(os.path.dirname(work) + '/', ''))
     died = []
     for rel, text in logs:
         for match in DIED.finditer(text):
