@@ -92,23 +92,25 @@ class ControlGroups(object):
                 pass
         return found
 
-    def peak_memory(self):
+    def _memory_file(self, name):
+        """The text of one of the memory controller's files, or None."""
         for directory in self.dirs:
-            path = os.path.join(directory, 'memory.max_usage_in_bytes')
+            path = os.path.join(directory, name)
             if os.path.exists(path):
                 with open(path) as f:
-                    return int(f.read())
+                    return f.read()
         return None
+
+    def peak_memory(self):
+        """Bytes the run used at its peak (None without a memory group)."""
+        text = self._memory_file('memory.max_usage_in_bytes')
+        return int(text) if text else None
 
     def oom_killed(self):
         """Did the kernel kill a process of the run for its memory?"""
-        for directory in self.dirs:
-            path = os.path.join(directory, 'memory.oom_control')
-            if os.path.exists(path):
-                with open(path) as f:
-                    for line in f:
-                        if line.startswith('oom_kill ') and int(line.split()[1]) > 0:
-                            return True
+        for line in (self._memory_file('memory.oom_control') or '').splitlines():
+            if line.startswith('oom_kill ') and int(line.split()[1]) > 0:
+                return True
         return False
 
     def remove(self):
