@@ -61,6 +61,7 @@ class TruthServer(object):
         self.first = self.latest = None        # (sim t, monotonic wall)
         self.states = self.frames = self.topics = self.dropped = 0
         self.closed = threading.Event()
+        self._lock = threading.Lock()          # the reader writes, close() closes
         self._out = open(os.path.join(record_dir, 'truth.jsonl'), 'w')
         self._thread = threading.Thread(target=self._serve, name='truth', daemon=True)
         self._thread.start()
@@ -102,7 +103,6 @@ class TruthServer(object):
                     self._record(line)
                 if len(buffer) > MAX_LINE:
                     buffer = b''
-        self.ended = True
 
     def _record(self, line):
         try:
@@ -134,7 +134,9 @@ class TruthServer(object):
             self.states += 1
         elif kind == 'topic':
             self.topics += 1
-        self._out.write(line.decode(errors='replace') + '\n')
+        with self._lock:
+            if not self._out.closed:
+                self._out.write(line.decode(errors='replace') + '\n')
 
     def real_time_factor(self):
         if self.first is None or self.latest is None or self.latest[1] <= self.first[1]:
@@ -146,7 +148,8 @@ class TruthServer(object):
         self._thread.join(2.0)
         time.sleep(0.6)       # the reader notices, writes its last line
         self.sock.close()
-        self._out.close()
+        with self._lock:
+            self._out.close()
         try:
             os.unlink(self.path)
         except OSError:
