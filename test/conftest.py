@@ -28,7 +28,8 @@ from original_env_helpers import base_env  # noqa: E402
 
 # The suite runs on several workers (pytest-xdist, tools/run test): the long
 # tests go first, so that no worker is left with one of them at the end.
-SLOW_FIRST = ('test_overlay.py', 'test_student_package.py', 'test_rostests.py',
+SLOW_FIRST = ('test_grader.py', 'test_grader_dask.py', 'test_overlay.py', 'test_student_package.py',
+              'test_rostests.py',
               'test_launch_args.py', 'test_original_env_tabs.py')
 
 
