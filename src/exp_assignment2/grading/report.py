@@ -152,6 +152,8 @@ def _page(summary, runs, runs_dir, pictures, profile):
         _e(main.get('commands_from')), _e('\n'.join(main.get('commands') or []))))
     for note in main.get('notes') or []:
         parts.append('<p>note: %s</p>' % _e(note))
+    for cut in main.get('cut') or []:     # what its worker did not send back whole
+        parts.append('<p>cut from what the worker sent back: %s</p>' % _e(cut))
     if summary['checks']:
         parts.append('<h2>Checks</h2><table><tr><th>check</th><th>figure</th><th>threshold</th>'
                      '<th></th><th>detail</th></tr>')
@@ -177,17 +179,18 @@ def _page(summary, runs, runs_dir, pictures, profile):
         parts.append('</div>')
     parts.append('<h2>Runs</h2><table><tr><th>run</th><th>seed</th><th>verdict</th>'
                  '<th>simulated s</th><th>real-time factor</th><th>wall s</th>'
-                 '<th>peak memory MB</th><th>to repeat it by hand</th></tr>')
+                 '<th>peak memory MB</th><th>where</th><th>to repeat it by hand</th></tr>')
     for run in runs:
         truth = run.get('truth') or {}
         rtf = run.get('real_time_factor')
         parts.append('<tr><td>%s</td><td>%s</td><td>%s</td><td>%.1f</td><td>%s%s</td>'
-                     '<td>%.0f</td><td>%.0f</td><td><code>%s</code></td></tr>' % (
+                     '<td>%.0f</td><td>%.0f</td><td>%s</td><td><code>%s</code></td></tr>' % (
                          _e(run['label']), _e(run.get('seed')), _verdict_badge(run['verdict']),
                          truth.get('sim_time', 0.0), '%.2f' % rtf if rtf else '—',
                          ' (below 0.95: starved)' if rtf and rtf < 0.95 * (
                              run.get('real_time_factor_asked') or 1) else '',
                          run.get('wall_time', 0.0), run.get('peak_memory_mb') or 0,
+                         _e(' then '.join(run.get('workers') or [])),
                          _e(run.get('repeat_command'))))
     parts.append('</table>')
     errors = main.get('errors') or []
@@ -209,8 +212,8 @@ def _page(summary, runs, runs_dir, pictures, profile):
             text = read_log(work, os.path.join('logs', name), {})
             if text:
                 parts.append('<h2>%s</h2><pre>%s</pre>' % (_e(name), _e(text[-20000:])))
-    parts.append('<p>Records: <code>%s</code></p></body></html>'
-                 % _e(os.path.join(runs_dir, main['label'])))
+    parts.append('<p>Package version %s. Records: <code>%s</code></p></body></html>'
+                 % (_e(main.get('version', '?')), _e(os.path.join(runs_dir, main['label']))))
     return ''.join(parts)
 
 
