@@ -100,6 +100,12 @@ def test_the_hostile_submission_costs_only_its_own_verdict(graded, tmp_path):
     assert changed == set()
     for path in ('/etc/hostile', '/work/hostile', '/root/hostile'):
         assert not os.path.exists(path)
+    # what it saw from inside: a read-only machine, and no other run
+    with open(os.path.join(graded['out'], 'runs', 'hostile', 'work', 'logs', 'command-0.log'),
+              'rb') as f:
+        said = f.read(1 << 20).decode(errors='replace')
+    assert 'REFUSED /etc/hostile Read-only file system' in said
+    assert 'OTHERS []' in said
     # every process of every run is gone
     assert all(r['all_gone'] for r in graded['runs'].values())
     # the dog graded alone: the same verdict as beside the hostile one
