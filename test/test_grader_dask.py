@@ -189,3 +189,41 @@ def test_ctrl_c_leaves_no_run_behind(cluster):
     while any(sandboxes_of(w.pid) for w in cluster['workers']):
         assert time.monotonic() < deadline, 'a run is still going on a worker'
         time.sleep(0.5)
+
+
+def test_a_run_whose_workers_keep_dying_is_a_grader_error(cluster):
+    """Past the scheduler's allowed failures (Dask's default, 3), the run ends as the
+    grader's fault."""
+    logs = [open(str(cluster['base'] / ('dying%d.log' % i)), 'w') for i in range(3)]
+    extra = [start_worker(cluster['address'], 1, log) for log in logs]
+    try:
+        workers_up(cluster['address'], len(cluster['workers']) + 3)
+        out = str(cluster['base'] / 'dying')
+        teacher = subprocess.Popen(['bash', RUN, 'grade', cluster['folder'], '--out', out,
+                                    '--scheduler', cluster['address'], '--duration', '25',
+                                    '--only', 'works'], stdout=subprocess.PIPE,
+                                   stderr=subprocess.STDOUT, universal_newlines=True)
+        killed = 0
+        deadline = time.monotonic() + 600
+        while teacher.poll() is None:
+            assert time.monotonic() < deadline, 'the grading did not end'
+            for worker in cluster['workers'] + extra:
+                if worker.poll() is None and sandboxes_of(worker.pid):
+                    os.killpg(worker.pid, signal.SIGKILL)
+                    worker.wait()
+                    killed += 1
+            time.sleep(0.3)
+        output = teacher.stdout.read()
+        assert teacher.returncode == 0, output[-3000:]
+        with open(os.path.join(out, 'runs', 'works', 'record', 'run.json')) as f:
+            run = json.load(f)
+        assert killed == 4
+        assert run['verdict'] == 'grader_error'
+        assert run['reason'].startswith('the grader lost this run: '), run['reason']
+        assert len(run['workers']) == 4
+    finally:
+        for proc in extra:
+            if proc.poll() is None:
+                os.killpg(proc.pid, signal.SIGKILL)
+        for log in logs:
+            log.close()

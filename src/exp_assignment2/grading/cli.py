@@ -137,6 +137,7 @@ class _Deferred(object):
 
 def grade(runs, cluster, progress):
     """Every Run as a Dask task; Ctrl-C ends every run (on every worker) and returns."""
+    from concurrent.futures import CancelledError
     from distributed import KilledWorker
     version = cluster.version
     for run in runs:
@@ -154,7 +155,8 @@ def grade(runs, cluster, progress):
                 cluster.poll_starts()
                 try:
                     unpack_result(future.result(), run, cluster.started)
-                except (KilledWorker, tasks.VersionMismatch, OSError, RuntimeError) as exc:
+                except (KilledWorker, CancelledError, tasks.VersionMismatch, OSError,
+                        RuntimeError) as exc:
                     lost_result(run, exc, cluster.started)
             for future in pending:
                 run = futures[future]

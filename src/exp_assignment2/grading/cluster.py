@@ -9,7 +9,8 @@ worker started with ``--resources runs=K`` takes at most K runs at once.
   naming both versions), and refuses a run that reaches it anyway.
 * A worker lost in the middle of a run: Dask runs the task again on another
   worker; each start is announced on a Dask queue, so the report says which
-  runs were run again and where. After ``allowed-failures`` losses the run
+  runs were run again and where. When the scheduler's ``allowed-failures``
+  (Dask's default: 3) is passed, at the fourth loss, the run
   ends as ``grader_error`` (KilledWorker), never as the student's fault.
 * Ctrl-C (or SIGTERM) sets a Dask event that every running task polls: its
   run is ended at once (its sandbox killed), and the futures are cancelled.
@@ -18,11 +19,11 @@ import os
 import socket
 import time
 import uuid
+import warnings
 
 from exp_assignment2.grading import tasks
 
 CONNECT_TIMEOUT = 5.0          # s to reach a scheduler, then one line
-ALLOWED_FAILURES = 2           # a run is tried again this often when its worker is lost
 
 
 class ClusterError(Exception):
@@ -63,8 +64,8 @@ class Cluster(object):
         import dask
         from distributed import Client, LocalCluster
         self.log = log
-        dask.config.set({'distributed.scheduler.allowed-failures': ALLOWED_FAILURES,
-                         'distributed.comm.timeouts.connect': '%ds' % CONNECT_TIMEOUT})
+        # allowed-failures is the scheduler's own setting: Dask's default (3) here too
+        dask.config.set({'distributed.comm.timeouts.connect': '%ds' % CONNECT_TIMEOUT})
         self.local = None
         if scheduler:
             _check_reachable(scheduler)
@@ -111,9 +112,15 @@ class Cluster(object):
             return 0
 
     def submit(self, payload):
-        # the submission's bytes go to the workers apart, not in the task graph
+        # the submission's bytes stay in the task itself, held by the scheduler: a
+        # copy scattered to one worker is lost with that worker, and the run with it
         payload = dict(payload)
-        data = self.client.scatter(payload.pop('data'), hash=False)
+        data = payload.pop('data')
+        with warnings.catch_warnings():       # "Large object ... in task graph": on purpose
+            warnings.simplefilter('ignore', UserWarning)
+            return self._submit(payload, data)
+
+    def _submit(self, payload, data):
         return self.client.submit(_task, payload, data, 'exp2-grade-stop-' + self.token,
                                   'exp2-grade-starts-' + self.token, resources={'runs': 1},
                                   pure=False, workers=self.workers,
