@@ -169,3 +169,18 @@ def test_an_sdf_world_massless_flag_is_said_once_by_the_sdf_reader_not_again(eng
     for model in world.models:
         engine.spawn(model.name, model.urdf, model.pose)
     assert warnings(engine) == []
+
+
+def test_a_root_called_world_is_gazebo_world_not_a_massless_link(engine):
+    text = ('<robot name="arm"><link name="world"/>'
+            '<link name="base">%s<collision><geometry><box size="0.2 0.2 0.2"/></geometry>'
+            '</collision></link><joint name="to_world" type="fixed"><parent link="world"/>'
+            '<child link="base"/></joint>'
+            '<link name="label"/><joint name="to_label" type="fixed"><parent link="world"/>'
+            '<child link="label"/></joint></robot>' % (INERTIAL % 1))
+    model = engine.spawn('arm', text, (0, 0, 1, 0, 0, 0))
+    assert sorted(model.body.links) == ['base', 'world']
+    assert warnings(engine) == [
+        "model arm: link label: no mass (no <inertial>, or mass 0) on fixed joint to_label: "
+        "Gazebo does not model it (sdformat: 'has no inertia, not modeled in sdf'); left out "
+        "here too"]

@@ -10,20 +10,25 @@ and none of the links below it either (``children links ignored``).
 
 So, for a dynamic model:
 
-* a massless link on a fixed joint rides on its parent, adding no mass, as
-  pybullet already does with it: nothing to say;
+* a massless link on a fixed joint rides on its parent, adding no mass
+  (:func:`bullet_masses` tells pybullet so, which would give a link without
+  ``<inertial>`` 1 kg): nothing to say, as Gazebo says nothing; the usual
+  frames of a URDF (``base_footprint``, a camera's optical frame) are such;
 * a massless link on a moving joint, with no mass lumped into it, is left out
   with the links below it, and so is what moves below a massless link on a
   fixed joint (Gazebo's traversal stops there): one warning line each,
   naming the link;
 * a root with no mass even after lumping: Gazebo would model nothing of the
   robot; refused, naming the link, as the SDF reader refuses a massless root.
+  A root called ``world`` is Gazebo's world, not a link: each link on a joint
+  to it is a root of its own (left out, not refused, when it has no mass).
 
 A static model (``<gazebo><static>``) or a kinematic one (gravity off on its
 root) is never moved by forces here, so its masses are not checked. A
 negative or non-finite mass is refused by :mod:`.urdf` before this.
 """
 MASS_EPSILON = 1e-6         # ignition::math::equal's default tolerance
+WORLD = 'world'             # a root link of this name is Gazebo's world
 SAYS = "sdformat: 'has no inertia, not modeled in sdf'"
 
 
@@ -57,7 +62,7 @@ def left_out(root, masses, joints):
             out += [joint.child] + below(joint.child)
         return out
 
-    if lumped_mass(root) <= MASS_EPSILON:
+    if root != WORLD and lumped_mass(root) <= MASS_EPSILON:
         raise MasslessRoot(
             'link %s: the root link of a dynamic model has no mass (no <inertial>, or mass 0), '
             'nor has any link fixed to it: Gazebo would model none of the robot (%s); give it '
@@ -71,7 +76,7 @@ def left_out(root, masses, joints):
             child = joint.child
             if lumped_mass(child) > MASS_EPSILON:
                 pending.append(child)
-            elif joint.type != 'fixed':
+            elif joint.type != 'fixed' or link == WORLD:
                 lost = below(child)
                 dropped.update([child] + lost)
                 lines.append('link %s: no mass (no <inertial>, or mass 0) on %s joint %s: '
@@ -118,7 +123,7 @@ def bullet_masses(root, masses, joints):
         children.setdefault(joint.parent, []).append(joint)
     out = {link: 0.0 for link, mass in masses.items()
            if mass <= MASS_EPSILON and link != root}
-    if masses[root] <= MASS_EPSILON:
+    if masses[root] <= MASS_EPSILON and root != WORLD:
         fixed, stack = 0.0, [root]
         while stack:
             for joint in children.get(stack.pop(), ()):
