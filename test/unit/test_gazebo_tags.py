@@ -36,9 +36,9 @@ ROBOT = '''<robot name="r">
     </plugin>
   </gazebo>
   <gazebo><static>false</static></gazebo>
-  <link name="base"><visual><geometry><box size="1 1 1"/></geometry>
-    <material name="blue"><color rgba="0 0 1 1"/></material></visual></link>
-  <link name="wheel"/>
+  <link name="base"><inertial><mass value="2"/></inertial><visual><geometry><box size="1 1 1"/>
+    </geometry><material name="blue"><color rgba="0 0 1 1"/></material></visual></link>
+  <link name="wheel"><inertial><mass value="0.1"/></inertial></link>
   <link name="cam"/>
   <joint name="j_left" type="continuous"><parent link="base"/><child link="wheel"/>
     <origin xyz="0 0.2 0"/><axis xyz="0 1 0"/></joint>

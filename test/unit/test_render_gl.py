@@ -94,7 +94,8 @@ def test_far_ball_outline_is_the_exact_projection(scene, gl, capsys):
 
 BOX_URDF = '''<?xml version="1.0"?>
 <robot name="box"><link name="box"><visual><geometry><box size="1 1 1"/></geometry>
-  <material name="red"><color rgba="0.9 0.1 0.1 1"/></material></visual></link></robot>
+  <material name="red"><color rgba="0.9 0.1 0.1 1"/></material></visual></link>
+  <gazebo><static>true</static></gazebo></robot>
 '''
 
 

@@ -98,3 +98,35 @@ def test_a_massless_link_on_a_moving_joint_is_refused():
         model_to_urdf(ARM.replace(upper, upper + '<inertial><mass>0</mass></inertial>'))
     assert str(err.value).startswith(
         'model[arm]/link[upper]/inertial/mass: 0 on a dynamic link (on revolute joint shoulder)')
+
+
+# a shed from a model nobody here knows: its visual is the mesh (turned a quarter),
+# its link declares its size in a box and a cylinder collision, as Gazebo models do
+SHED = """<model name='shed'><static>1</static><link name='link'>
+  <visual name='v'><pose>0 0 0 0 0 1.5707963267948966</pose><geometry><mesh>
+    <uri>model://shed_kit/meshes/shed.dae</uri><scale>3 3 3</scale></mesh></geometry></visual>
+  <collision name='walls'><pose>0 0 1 0 0 0</pose>
+    <geometry><box><size>4 2 2</size></box></geometry></collision>
+  <collision name='post'><pose>2.5 0 0.5 0 0 0</pose>
+    <geometry><cylinder><radius>0.1</radius><length>1</length></cylinder></geometry></collision>
+  <collision name='roof'><geometry><mesh><uri>model://shed_kit/meshes/roof.dae</uri></mesh>
+    </geometry></collision>
+</link></model>"""
+
+
+def test_an_unknown_mesh_is_a_box_of_the_size_its_link_collisions_declare():
+    w = read_world(world(SHED), model_path=[])
+    assert w.notes == [
+        "model://shed_kit/meshes/shed.dae is not installed: a 4.60 x 2.00 x 2.00 m box stands "
+        "in (the size its link's box, cylinder and sphere collisions declare; seen, its link's "
+        "collisions collide), in 1 model: shed",
+        'model://shed_kit/meshes/roof.dae is not installed: a 1.00 x 1.00 x 1.00 m box stands '
+        'in (the default for a model not in config/gazebo_model_sizes.yaml; seen, not collided '
+        'with), in 1 model: shed']
+    shed = _models(w)['shed']
+    (visual,) = shed.findall('link/visual')
+    assert visual.find('geometry/box').get('size') == '4.6 2 2'      # in metres: no <scale>
+    xyz = [float(v) for v in visual.find('origin').get('xyz').split()]
+    rpy = [float(v) for v in visual.find('origin').get('rpy').split()]
+    assert xyz == pytest.approx([0.3, 0, 1]) and rpy == pytest.approx([0, 0, 0], abs=1e-9)
+    assert [c.get('name') for c in shed.findall('link/collision')] == ['walls', 'post']

@@ -15,7 +15,11 @@ URDF robot per model (:mod:`.sdf_model`).
 
 Shapes: box, cylinder, sphere, plane (a thin box whose top face is the plane),
 STL/OBJ meshes that are installed. Any other mesh becomes a box of the model's
-known size from ``config/gazebo_model_sizes.yaml``. ``<include>`` of
+known size from ``config/gazebo_model_sizes.yaml``; a visual's mesh of a model
+the table does not know, a box of the size its link declares (the box bounding
+the link's box, cylinder and sphere collisions, as Gazebo models give them
+beside a mesh), else a 1 m box scaled by the mesh's ``<scale>``, seen and not
+collided with (:data:`.sdf_sources.DEFAULT_MESH_BOX`). ``<include>`` of
 ``model://NAME``: the installed model (``GAZEBO_MODEL_PATH``,
 ``~/.gazebo/models``), else Gazebo's ``ground_plane`` and ``sun``, else a box
 of the known size. Lights are not simulated and are skipped; actors,

@@ -123,10 +123,41 @@ def colour_of(visual, where):
     return GAZEBO_MATERIALS.get(name, DEFAULT_RGBA)
 
 
-def shapes_of(geometry_parent, where, context, part='visual'):
+PRIMITIVES = ('box', 'cylinder', 'sphere')
+
+
+def declared_box(link, where, context):
+    """The size a link declares for its shapes, as Gazebo models give it next
+    to a mesh: (4x4 centre, [x, y, z] size) in the link frame of the box that
+    bounds its box, cylinder and sphere collisions, or None without any."""
+    corners = []
+    for part in link.findall('collision'):
+        geometry = part.find('geometry')
+        if geometry is None or len(geometry) == 0 or geometry[0].tag not in PRIMITIVES:
+            continue
+        w = '%s/collision[%s]' % (where, part.get('name', ''))
+        pose = pose_of(part, w)
+        for offset, (kind, params), _ in shapes_of(part, w, context, 'collision'):
+            half = (np.asarray(params['size']) / 2.0 if kind == 'box' else
+                    np.array([params['radius']] * 2 + [params['length'] / 2.0])
+                    if kind == 'cylinder' else np.array([params['radius']] * 3))
+            frame = pose.dot(offset)
+            for sign in np.array(np.meshgrid([-1, 1], [-1, 1], [-1, 1])).T.reshape(-1, 3):
+                corners.append(frame[:3, :3].dot(sign * half) + frame[:3, 3])
+    if not corners:
+        return None
+    low, high = np.min(corners, axis=0), np.max(corners, axis=0)
+    centre = np.eye(4)
+    centre[:3, 3] = (low + high) / 2.0
+    return centre, [float(v) for v in high - low]
+
+
+def shapes_of(geometry_parent, where, context, part='visual', declared=None):
     """The ``<geometry>`` of a visual or collision (``part``) as [(4x4 offset,
     (kind, params), rgba)]: what URDF shapes stand for it, placed in the
-    element's frame; rgba is a stand-in's own colour, else None."""
+    element's frame; rgba is a stand-in's own colour, else None. ``declared()``
+    (:func:`declared_box` in the element's frame, or None) sizes the box that
+    stands in for a visual's mesh of a model nobody knows the size of."""
     geometry = geometry_parent.find('geometry')
     where += '/geometry'
     if geometry is None or len(geometry) == 0:
@@ -150,7 +181,7 @@ def shapes_of(geometry_parent, where, context, part='visual'):
     if kind == 'plane':
         return [_plane(shape, where + '/plane')]
     if kind == 'mesh':
-        return _mesh(shape, where + '/mesh', context, part)
+        return _mesh(shape, where + '/mesh', context, part, declared)
     raise SdfError('%s: unknown shape <%s>; accepted: box, cylinder, sphere, plane, mesh'
                    % (where, kind))
 
@@ -187,7 +218,7 @@ def _axis_angle(axis, angle):
     return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k.dot(k)
 
 
-def _mesh(shape, where, context, part):
+def _mesh(shape, where, context, part, declared):
     uri = shape.findtext('uri', '').strip()
     if not uri:
         raise SdfError('%s: no <uri>' % where)
@@ -195,7 +226,13 @@ def _mesh(shape, where, context, part):
     path = context.mesh_file(uri)
     if path is not None and os.path.splitext(path)[1].lower() in MESH_FILE_TYPES:
         return [(np.eye(4), ('mesh', {'filename': path, 'scale': scale}), None)]
-    stand_in = context.stand_in(uri, where, installed=path is not None)
+    box = (declared() if declared is not None and part == 'visual' and not context.knows(uri)
+           else None)
+    stand_in = context.stand_in(uri, where, installed=path is not None,
+                                declared=box[1] if box else None)
+    if stand_in.get('declared'):    # sized by the link's own collisions, in metres
+        return [(box[0], ('box', {'size': _positive(list(stand_in['size']), where)}),
+                 stand_in['rgba'])]
     if stand_in.get('default') and part == 'collision':
         return []       # a guessed box must not stop a robot where the real mesh would not
     offset = np.eye(4)

@@ -17,7 +17,8 @@ from collections import OrderedDict
 import numpy as np
 
 from exp_assignment2.sim.sdf_geometry import (DEFAULT_RGBA, SdfError, child_floats, colour_of,
-                                              floats, pose_of, pose_tuple, shapes_of)
+                                              declared_box, floats, pose_of, pose_tuple,
+                                              shapes_of)
 
 JOINT_TYPES = ('revolute', 'continuous', 'prismatic', 'fixed')
 NO_LIMIT = 1e15             # SDF's default limits are +-1e16: no limit
@@ -112,12 +113,19 @@ def _read_link(elem, where, context):
                            for tag, default in zip(('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz'),
                                                    values))
         link.inertial = (mass, pose_of(inertial, w), values)
+    found = []      # the link's declared size, read only for a mesh that needs it
+
+    def declared(pose):
+        if not found:
+            found.append(declared_box(elem, where, context))
+        return found[0] and (np.linalg.inv(pose).dot(found[0][0]), found[0][1])
     for kind, out in (('visual', link.visuals), ('collision', link.collisions)):
         for part in elem.findall(kind):
             w = '%s/%s[%s]' % (where, kind, part.get('name', ''))
             pose = pose_of(part, w)
             coloured = kind == 'visual' and part.find('material') is not None
-            for offset, shape, own in shapes_of(part, w, context, kind):
+            for offset, shape, own in shapes_of(part, w, context, kind,
+                                                lambda pose=pose: declared(pose)):
                 rgba = colour_of(part, w) if coloured else own or DEFAULT_RGBA
                 out.append((part.get('name', kind), pose.dot(offset), shape, rgba))
     link.sensors = [(sensor, pose_of(sensor, '%s/sensor[%s]' % (where, sensor.get('name', ''))))

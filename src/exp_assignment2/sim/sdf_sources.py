@@ -23,8 +23,10 @@ SIZES_FILE = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__fil
                                            'gazebo_model_sizes.yaml'))
 SIZES_NAME = 'config/gazebo_model_sizes.yaml'
 MAX_INCLUDE_DEPTH = 8
-# A mesh of a model the table does not know: a visual box of this size, standing
-# on the mesh's origin, and no collision (docs/original_env_supplies.md)
+# A mesh of a model the table does not know, in a link that declares no size (no
+# box, cylinder or sphere collision to size it by): a visual box of this size,
+# scaled by the mesh's <scale>, standing on the mesh's origin, and no collision
+# (docs/original_env_supplies.md)
 DEFAULT_MESH_BOX = {'size': [1.0, 1.0, 1.0], 'center': [0.0, 0.0, 0.5], 'rgba': DEFAULT_RGBA,
                     'static': True, 'mass': 1.0, 'default': True}
 GROUND_PLANE = """<model name="ground_plane"><static>true</static><link name="link">
@@ -91,14 +93,22 @@ class Sources(object):
             path = os.path.join(self.base_dir, path) if not os.path.isabs(path) else path
         return path if path and os.path.isfile(path) else None
 
-    def stand_in(self, uri, where, installed):
-        """The size-table entry that stands in for a mesh, recorded for the notes."""
-        name = (uri[len('model://'):].split('/')[0] if uri.startswith('model://')
-                else os.path.splitext(os.path.basename(uri))[0])
-        entry = self.sizes.get(name, DEFAULT_MESH_BOX)
-        self.used.setdefault(uri, [entry, installed, []])
-        if self.model not in self.used[uri][2]:
-            self.used[uri][2].append(self.model)
+    def knows(self, uri):
+        """Whether the size table knows the model of a mesh URI."""
+        return _model_name(uri) in self.sizes
+
+    def stand_in(self, uri, where, installed, declared=None):
+        """The entry that stands in for a mesh, recorded for the notes: the size
+        table's for a model it knows, else a box of the ``declared`` size (m,
+        what the visual's link declares), else :data:`DEFAULT_MESH_BOX`."""
+        entry = self.sizes.get(_model_name(uri))
+        if entry is None and declared is not None:
+            entry = {'size': list(declared), 'rgba': DEFAULT_RGBA, 'declared': True}
+        entry = entry or DEFAULT_MESH_BOX
+        key = (uri, tuple(entry['size']))
+        self.used.setdefault(key, [entry, installed, []])
+        if self.model not in self.used[key][2]:
+            self.used[key][2].append(self.model)
         return entry
 
     def include(self, elem, where):
@@ -178,16 +188,24 @@ class Sources(object):
     def notes(self):
         """One line per stand-in: which mesh, which box, in which models."""
         lines = []
-        for uri, (entry, installed, models) in self.used.items():
+        for (uri, _), (entry, installed, models) in self.used.items():
             named = ', '.join(models[:3]) + (', ...' if len(models) > 3 else '')
             lines.append('%s %s: a %s m box stands in (%s), in %d model%s: %s' % (
                 uri, 'is COLLADA, which the simulator does not load' if installed
                 else 'is not installed',
                 ' x '.join('%.2f' % v for v in entry['size']),
                 'the default for a model not in %s; seen, not collided with' % SIZES_NAME
-                if entry.get('default') else SIZES_NAME,
+                if entry.get('default') else
+                "the size its link's box, cylinder and sphere collisions declare; seen, its "
+                "link's collisions collide" if entry.get('declared') else SIZES_NAME,
                 len(models), '' if len(models) == 1 else 's', named))
         return lines
+
+
+def _model_name(uri):
+    """The model a mesh URI belongs to (``model://NAME/...``), else its file's name."""
+    return (uri[len('model://'):].split('/')[0] if uri.startswith('model://')
+            else os.path.splitext(os.path.basename(uri))[0])
 
 
 def parse_xml(source, where):

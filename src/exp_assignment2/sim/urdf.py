@@ -6,8 +6,10 @@ materials resolved to RGBA, mesh paths resolved (``package://``, relative to
 the file), and the ``<gazebo>`` extension tags read by
 :mod:`exp_assignment2.sim.gazebo_tags` (plugins, sensors, Gazebo colours,
 static models). A link coloured by ``<gazebo reference><material>`` is drawn
-in that colour, as Gazebo draws it. :meth:`UrdfModel.bullet_text` is the
-text pybullet loads: mesh paths made absolute, nothing else changed.
+in that colour, as Gazebo draws it. Links without mass are modeled as
+Gazebo 11 models them (:mod:`.urdf_masses`): what Gazebo leaves out is left
+out, with one warning line each. :meth:`UrdfModel.bullet_text` is the text
+pybullet loads: mesh paths made absolute, nothing else changed.
 """
 import math
 import os
@@ -16,7 +18,7 @@ from collections import OrderedDict, namedtuple
 
 import numpy as np
 
-from exp_assignment2.sim import gazebo_tags
+from exp_assignment2.sim import gazebo_tags, urdf_masses
 
 DEFAULT_RGBA = (1.0, 1.0, 1.0, 1.0)   # pybullet's colour for a visual without material
 # The largest size (m) and mesh scale a shape may have: Gazebo's ground plane
@@ -118,6 +120,7 @@ class UrdfModel(object):
         self.name, self.root, self.links, self.joints = name, root, links, joints
         self.gazebo, self._tree, self.base_dir = gazebo, tree, base_dir
         self.warnings = []
+        self.bullet_masses = {}     # link -> the mass pybullet is given (urdf_masses)
 
     @property
     def visuals(self):
@@ -149,7 +152,20 @@ class UrdfModel(object):
         for mesh in tree.iter('mesh'):
             if mesh.get('filename'):
                 mesh.set('filename', resolve_mesh_path(mesh.get('filename'), self.base_dir))
+        for link in tree.findall('link'):
+            if link.get('name') in self.bullet_masses:
+                _set_mass(link, self.bullet_masses[link.get('name')])
         return ET.tostring(tree, encoding='unicode')
+
+
+def _set_mass(link, mass):
+    inertial = link.find('inertial')
+    if inertial is None:
+        inertial = ET.SubElement(link, 'inertial')
+        ET.SubElement(inertial, 'inertia', ixx='0', ixy='0', ixz='0', iyy='0', iyz='0', izz='0')
+    if inertial.find('mass') is None:
+        ET.SubElement(inertial, 'mass')
+    inertial.find('mass').set('value', '%.9g' % mass)
 
 
 def _geometry(elem, where, base_dir):
@@ -216,13 +232,25 @@ def _link(elem, materials, gazebo_colour, base_dir):
             if gazebo_colour is not None:
                 rgba = gazebo_colour
             out.append(Visual(origin_matrix(v, where), shape, params, tuple(rgba)))
-    inertial = elem.find('inertial')
-    mass = inertial.find('mass') if inertial is not None else None
+    return Link(name, visuals, collisions, _mass(elem.find('inertial'), name))
+
+
+def _mass(inertial, name):
+    """A link's mass (0 without an ``<inertial>``); every number of the
+    inertial finite (ODE's bodies go NaN otherwise), the mass >= 0."""
+    if inertial is None:
+        return 0.0
+    mass = inertial.find('mass')
     value = floats(mass.get('value', '0'), 1, (0.0,), 'link %s mass' % name)[0] \
         if mass is not None else 0.0
     if value < 0:
         raise UrdfError('link %s: mass %.10g is negative' % (name, value))
-    return Link(name, visuals, collisions, value)
+    block = inertial.find('inertia')
+    for key in ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz'):
+        floats(block.get(key) if block is not None else None, 1, (0.0,),
+               'link %s inertia %s' % (name, key))
+    origin_matrix(inertial, 'link %s inertial origin' % name)
+    return value
 
 
 def _joint(elem):
@@ -275,8 +303,35 @@ def parse(text, base_dir='.'):
     if len(roots) != 1:
         raise UrdfError('robot %s: %d root links (%s); a URDF is one tree'
                         % (name, len(roots), ', '.join(roots)))
-    model = UrdfModel(name, roots[0], links, joints, tags, root, base_dir)
     # Gazebo ignores a tag for a link it does not have; so do we, but say so
-    model.warnings = ['<gazebo reference="%s">: no link or joint of that name; ignored' % ref
-                      for ref in tags.references() if ref not in links and ref not in joints]
+    unknown = ['<gazebo reference="%s">: no link or joint of that name; ignored' % ref
+               for ref in tags.references() if ref not in links and ref not in joints]
+    dropped, lines = set(), []
+    if not tags.static and roots[0] not in tags.gravity_off:
+        try:
+            dropped, lines = urdf_masses.left_out(
+                roots[0], {n: link.mass for n, link in links.items()}, joints.values())
+        except urdf_masses.MasslessRoot as exc:
+            raise UrdfError(str(exc))
+    if dropped:
+        tags = _leave_out(root, dropped, joints)
+        links = OrderedDict((n, link) for n, link in links.items() if n not in dropped)
+        joints = OrderedDict((n, j) for n, j in joints.items() if j.child not in dropped)
+    model = UrdfModel(name, roots[0], links, joints, tags, root, base_dir)
+    model.warnings = unknown + lines
+    if not tags.static and roots[0] not in tags.gravity_off:
+        model.bullet_masses = urdf_masses.bullet_masses(
+            roots[0], {n: link.mass for n, link in links.items()}, joints.values())
     return model
+
+
+def _leave_out(root, dropped, joints):
+    """Remove the links Gazebo does not model from the tree, with their joints
+    and their ``<gazebo reference>`` tags; the tags read again."""
+    names = set(dropped) | {j.name for j in joints.values() if j.child in dropped}
+    for elem in list(root):
+        if (elem.tag == 'link' and elem.get('name') in dropped) or \
+                (elem.tag == 'joint' and elem.get('name') in names) or \
+                (elem.tag == 'gazebo' and elem.get('reference') in names):
+            root.remove(elem)
+    return gazebo_tags.read(root)
