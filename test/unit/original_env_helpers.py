@@ -1,12 +1,14 @@
-"""What the tests of tools/original_env share: the environment outside and
-inside the original-code shell, and a snippet run in Debian's python3."""
-import json
+"""What the tests of the original-code environment (src/exp_assignment2/original_env)
+share: the environment outside and inside the original-code shell, and a
+snippet run in Debian's python3."""
 import os
 import subprocess
 import textwrap
 
+from exp_assignment2.original_env.environment import compute
+
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-ENV_DIR = os.path.join(REPO, 'tools', 'original_env')
+ENV_DIR = os.path.join(REPO, 'src', 'exp_assignment2', 'original_env')
 PYTHON = '/usr/bin/python3'
 
 
@@ -21,10 +23,9 @@ def base_env(pythonpath=()):
 
 
 def original_env(env):
-    """What shell.sh sets, computed by the same helper."""
-    out = subprocess.run([PYTHON, os.path.join(ENV_DIR, 'env.py'), '--json'], env=env,
-                         stdout=subprocess.PIPE, universal_newlines=True, timeout=30, check=True)
-    return dict(env, **json.loads(out.stdout))
+    """What shell.sh sets last (the start-up hooks, the shims), computed by the
+    same function."""
+    return dict(env, **compute(env))
 
 
 def run(code, env, timeout=30):

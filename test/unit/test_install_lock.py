@@ -65,8 +65,8 @@ def test_the_overlay_build_takes_the_same_lock(tmp_path, monkeypatch):
     an installer of tools/install.sh, then asks again what is missing."""
     import importlib.util
     spec = importlib.util.spec_from_file_location(
-        'debian_packages', os.path.join(REPO, 'tools', 'original_env', 'overlay',
-                                        'debian_packages.py'))
+        'debian_packages', os.path.join(REPO, 'src', 'exp_assignment2', 'original_env',
+                                        'overlay', 'debian_packages.py'))
     debian_packages = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(debian_packages)
     log = tmp_path / 'log'

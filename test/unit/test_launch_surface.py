@@ -6,7 +6,6 @@ import math
 import os
 import shutil
 import subprocess
-import sys
 from types import SimpleNamespace
 
 import pytest
@@ -14,12 +13,10 @@ import pytest
 from exp_assignment2.launch_surface import gzserver, spawn_args, spawner_args, viewer
 from exp_assignment2.launch_surface.xacro_runner import xacro_argv
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
-    os.path.abspath(__file__)))), 'tools', 'original_env'))
-import launch_packages  # noqa: E402
+from exp_assignment2.original_env import launch_packages
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-PACKAGES = os.path.join(REPO, 'tools', 'original_env', 'packages')
+PACKAGES = launch_packages.PACKAGES
 STUDENT = os.path.join(REPO, 'test', 'fixtures', 'student_pkg')
 
 

@@ -1,4 +1,4 @@
-"""How the original-code shell starts a node's file (tools/original_env/gui/
+"""How the original-code shell starts a node's file (src/exp_assignment2/original_env/startup/
 exp2_node_start.py), as plain functions: which first lines name Python 2, and
 the command for a file without its execute bit. No ROS master."""
 import os
@@ -6,9 +6,9 @@ import sys
 
 import pytest
 
-GUI = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(
-    __file__)))), 'tools', 'original_env', 'gui')
-sys.path.insert(0, GUI)
+STARTUP = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(
+    __file__)))), 'src', 'exp_assignment2', 'original_env', 'startup')
+sys.path.insert(0, STARTUP)
 import exp2_node_start  # noqa: E402
 
 

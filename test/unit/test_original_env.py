@@ -1,6 +1,6 @@
-"""tools/original_env: the opt-in shell for code written for the original assignment.
+"""The original-code environment (src/exp_assignment2/original_env): the opt-in shell for code written for the original assignment.
 
-The environment is built as tools/original_env/shell.sh builds it (env.py),
+The environment is built as tools/original_env/shell.sh builds it (environment.compute),
 from the environment the tests run in, and used by subprocesses of Debian's
 python3. No ROS master is needed. The cv2 GUI tests are in
 test_original_env_gui.py.

@@ -1,4 +1,4 @@
-"""tools/original_env: cv2 HighGUI from several threads, on a private X
+"""The original-code environment: cv2 HighGUI from several threads, on a private X
 server (skipped when Xvfb is not installed), as code written for the
 original assignment calls it."""
 import os

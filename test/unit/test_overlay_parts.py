@@ -1,4 +1,4 @@
-"""The plain-Python parts of original-env --package (tools/original_env/overlay/):
+"""The plain-Python parts of original-env --package (src/exp_assignment2/original_env/overlay/):
 what of a package directory counts, the first error of a build log, the catkin
 components a CMakeLists.txt names, the launch files of the second package name,
 and the merged exp_assignment2 Python package. No ROS, no build."""
@@ -9,14 +9,9 @@ import textwrap
 
 import pytest
 
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(REPO, 'tools', 'original_env', 'overlay'))
+from exp_assignment2.original_env.overlay import (build_errors, python_package, sim_package,
+                                                  source_tree, stand_ins)
 
-import build_errors  # noqa: E402
-import python_package  # noqa: E402
-import sim_package  # noqa: E402
-import source_tree  # noqa: E402
-import stand_ins  # noqa: E402
 
 
 def write(path, text='', mode=None):

@@ -1,4 +1,4 @@
-"""image_transport's republish stand-in (tools/original_env/packages): its
+"""image_transport's republish stand-in (src/exp_assignment2/original_env/stand_in_packages): its
 command line, and the camera's JPEG stream as raw images and back, run as a
 launch file runs it."""
 import os
@@ -9,7 +9,8 @@ import pytest
 from exp_assignment2.launch_surface.republish import parse
 from original_env_helpers import PYTHON, REPO, run
 
-REPUBLISH = os.path.join(REPO, 'tools', 'original_env', 'packages', 'image_transport',
+REPUBLISH = os.path.join(REPO, 'src', 'exp_assignment2', 'original_env', 'stand_in_packages',
+                         'image_transport',
                          'scripts', 'republish')
 
 

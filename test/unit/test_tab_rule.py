@@ -1,6 +1,6 @@
 """Python 2's tab rule of the original-code shell, as plain functions (no subprocess).
 
-tools/original_env/gui: exp2_py2_indent (the re-indenter), exp2_tab_import's
+src/exp_assignment2/original_env/startup: exp2_py2_indent (the re-indenter), exp2_tab_import's
 read_with_tab_rule (when it acts), exp2_code_columns (columns of tracebacks),
 exp2_tab_report's idea of an import statement. The fixtures in
 test/original_tabs mix tabs and spaces as original student code does.
@@ -12,9 +12,9 @@ import sys
 import pytest
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-GUI = os.path.join(REPO, 'tools', 'original_env', 'gui')
+STARTUP = os.path.join(REPO, 'src', 'exp_assignment2', 'original_env', 'startup')
 FIXTURES = os.path.join(REPO, 'test', 'original_tabs')
-sys.path.insert(0, GUI)
+sys.path.insert(0, STARTUP)
 
 import exp2_code_columns  # noqa: E402
 import exp2_py2_indent  # noqa: E402

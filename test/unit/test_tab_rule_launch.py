@@ -1,23 +1,24 @@
 """Python 2's tab rule of the original-code shell, in real interpreters (no ROS master).
 
-The shell's environment is made as shell.sh makes it: env.py's variables and
+The shell's environment is made as shell.sh makes it: environment.compute's variables and
 a bin directory with ``python`` and ``python3``, copies of
-tools/original_env/python_launcher.sh.
+src/exp_assignment2/original_env/programs/python_launcher.sh.
 The fixtures (test/original_tabs: a script and the module it imports, both
 mixing tabs and spaces) are copied to a temporary directory and started the
 ways a user starts them; test/test_original_env_tabs.py adds rosrun and
 roslaunch inside ``tools/run original-env``.
 """
 import hashlib
-import json
 import os
 import shutil
 import subprocess
 
 import pytest
 
+from exp_assignment2.original_env.environment import compute
+
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-ENV_DIR = os.path.join(REPO, 'tools', 'original_env')
+ENV_DIR = os.path.join(REPO, 'src', 'exp_assignment2', 'original_env')
 FIXTURES = os.path.join(REPO, 'test', 'original_tabs')
 PYTHON = '/usr/bin/python3'
 LINE = "[original-env] read with Python 2's tab rule: "
@@ -33,7 +34,7 @@ def shell(tmp_path):
     bin_dir, work = tmp_path / 'bin', tmp_path / 'work'
     bin_dir.mkdir()
     for name in ('python', 'python3'):
-        shutil.copy(os.path.join(ENV_DIR, 'python_launcher.sh'), str(bin_dir / name))
+        shutil.copy(os.path.join(ENV_DIR, 'programs', 'python_launcher.sh'), str(bin_dir / name))
         (bin_dir / name).chmod(0o755)
     shutil.copytree(FIXTURES, str(work))
     (work / 'tabs_node.py').chmod(0o755)
@@ -43,9 +44,7 @@ def shell(tmp_path):
              if p and not p.startswith(ENV_DIR)]
     env['PYTHONPATH'] = os.pathsep.join(paths + [os.path.join(REPO, 'src')])
     env['EXP2_ORIGINAL_BIN'] = str(bin_dir)
-    out = subprocess.run([PYTHON, os.path.join(ENV_DIR, 'env.py'), '--json'], env=env,
-                         stdout=subprocess.PIPE, universal_newlines=True, timeout=30, check=True)
-    return dict(env, **json.loads(out.stdout)), work
+    return dict(env, **compute(env)), work
 
 
 def run(args, env, cwd, stdin=None):

@@ -2,7 +2,7 @@
 
 What ``gazebo_ros``, ``xacro`` and ``controller_manager`` give a Gazebo
 launch file, on this package's simulator: the executables in
-``tools/original_env/packages/`` (on ROS_PACKAGE_PATH only inside
+``src/exp_assignment2/original_env/stand_in_packages/`` (on ROS_PACKAGE_PATH only inside
 ``tools/run original-env``) are two-line wrappers of the ``main`` functions
 here. Command lines are read by plain functions (``*_args`` modules and
 :func:`gzserver.translate`), unit-tested without ROS; the rest is rospy glue.

@@ -24,8 +24,8 @@ from visualization_msgs.msg import MarkerArray
 from exp_assignment2.launch_surface import robot_drawing, viewer
 from exp_assignment2.launch_surface.stopping import Stop
 
-CONFIG = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..',
-                                       '..', 'tools', 'original_env', 'packages', 'gazebo_ros',
+CONFIG = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..',
+                                       'original_env', 'stand_in_packages', 'gazebo_ros',
                                        'rviz', 'gzclient.rviz'))
 PERIOD = 0.05       # wall s between two broadcasts of the same topic's frames
 LOOK = 2.0          # wall s between two looks for descriptions of models not drawn yet

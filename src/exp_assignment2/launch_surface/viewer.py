@@ -1,6 +1,6 @@
 """What gazebo_ros' ``gzclient`` shows here, as plain data (no rospy).
 
-The viewer is rviz with ``tools/original_env/packages/gazebo_ros/rviz/
+The viewer is rviz with ``src/exp_assignment2/original_env/stand_in_packages/gazebo_ros/rviz/
 gzclient.rviz`` (fixed frame ``world``: the grid, ``/gazebo/world_markers``,
 and TF), fed by ``gzclient`` with one TF frame per model and per link of
 ``/gazebo/model_states`` and ``/gazebo/link_states``: ``gazebo/<model>`` and

@@ -22,7 +22,7 @@ state returning an outcome it did not register is an
 :class:`InvalidTransitionError`, and an exception from user code is wrapped
 in :class:`InvalidUserCodeError`.
 """
-# relative imports: tools/original_env's smach loads this package by its path
+# relative imports: original_env/shims/smach loads this package by its path
 # when ``exp_assignment2`` is a user's package of that name
 from .concurrence import Concurrence
 from .iterator import Iterator

@@ -1,0 +1,59 @@
+#!/bin/sh
+# `python` and `python3` of the original-code shell (original_env/environment.py
+# copies this file to both in $EXP2_ORIGINAL_BIN, first on PATH, so `python3 x.py`,
+# `#!/usr/bin/env python` scripts, rosrun and roslaunch all start here).
+#
+# It is /usr/bin/python3, except for one case: a script (`python3 [OPTIONS]
+# SCRIPT ARGS`) with a tab in the indentation of some line is started through
+# exp2_tab_script.py (src/exp_assignment2/original_env/startup), which reads it with Python 2's
+# tab rule if Python 3 refuses its indentation. -c, -m, -, no argument,
+# --version and the like, -x, and -E/-I (which drop PYTHONPATH, so the
+# original-code shell with it) go to /usr/bin/python3 as they are;
+# EXP2_TAB_RULE=0 turns the tab rule off.
+PYTHON=/usr/bin/python3
+
+[ "${EXP2_TAB_RULE:-1}" != 0 ] || exec "$PYTHON" "$@"
+
+# Find the script: the first argument that is not an option or an option's value.
+script_at=0 index=0 value_next=
+for arg in "$@"; do
+  index=$((index + 1))
+  if [ -n "$value_next" ]; then value_next=; continue; fi
+  case $arg in
+    --check-hash-based-pycs) value_next=1 ;;
+    --) script_at=$((index + 1)); break ;;  # the script, whatever it looks like
+    -) exec "$PYTHON" "$@" ;;
+    --*) exec "$PYTHON" "$@" ;;
+    -*)
+      flags=${arg#-}
+      while [ -n "$flags" ]; do
+        flag=${flags%"${flags#?}"}
+        flags=${flags#?}
+        case $flag in
+          c|m|x|E|I|h|V|\?) exec "$PYTHON" "$@" ;;
+          W|X) [ -n "$flags" ] || value_next=1; flags= ;;
+        esac
+      done ;;
+    *) script_at=$index; break ;;
+  esac
+done
+[ "$script_at" -gt 0 ] && [ "$script_at" -le $# ] || exec "$PYTHON" "$@"
+eval "script=\${$script_at}"
+[ "$script" != - ] && [ -f "$script" ] && [ -r "$script" ] || exec "$PYTHON" "$@"
+LC_ALL=C grep -qs -e "$(printf '^[ \f]*\t')" -- "$script" || exec "$PYTHON" "$@"
+
+# The same arguments with `-c 'import exp2_tab_script; ...'` before the script
+# (without a `--` before it: what follows -c CODE is never read as an option).
+index=0
+for arg in "$@"; do
+  shift
+  index=$((index + 1))
+  if [ "$index" = $((script_at - 1)) ] && [ "$arg" = -- ]; then
+    continue
+  elif [ "$index" = "$script_at" ]; then
+    set -- "$@" -c 'import exp2_tab_script; exp2_tab_script.main()' "$arg"
+  else
+    set -- "$@" "$arg"
+  fi
+done
+exec "$PYTHON" "$@"
