@@ -1,16 +1,21 @@
-"""The grader's driver inside a run's sandbox (standard library only: the
-student's package may be called ``exp_assignment2`` too).
+"""The grader's driver inside a run's sandbox.
 
     /usr/bin/python3 inside.py PLAN.json
 
 The plan (written by :mod:`exp_assignment2.grading.runner`) gives the
-original-code shell, the package, the commands and the delay between them.
-The driver builds the package (``original-env --package PKG true``), starts
-a master, then each command through the original-code shell, a few seconds
-apart, each in a process group of its own with its output in ``logs/``. It
-reports what happens as JSON lines on its standard output (``built``,
-``started``, ``exited``, ``ended``) and ends every command, gently then not,
-when the grader writes ``stop`` on its standard input or closes it.
+package, the commands and the delay between them. The driver makes the
+original-code environment for the package once
+(:func:`exp_assignment2.original_env.environment.environment`: the package
+built in its overlay, its messages in ``logs/build.log``), starts a master,
+then each command in that environment, a few seconds apart, each in a
+process group of its own with its output in ``logs/``. It reports what
+happens as JSON lines on its standard output (``built``, ``master``,
+``started``, ``exited``, ``stopping``, ``ended``) and ends every command,
+gently then not, when the grader writes ``stop`` on its standard input or
+closes it.
+
+The student's package may be called ``exp_assignment2`` too: this
+repository's ``src`` comes first on sys.path, so the library is ours.
 """
 import json
 import os
@@ -20,6 +25,9 @@ import subprocess
 import sys
 import threading
 import time
+
+# this repository's src: src/exp_assignment2/grading/inside.py -> three levels up
+SRC = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
 
 MASTER_WAIT = 30.0      # s for the master to answer
 GRACE = 8.0             # s between SIGINT and SIGTERM, and SIGTERM and SIGKILL
@@ -32,15 +40,44 @@ def emit(event, **fields):
     sys.stdout.flush()
 
 
-def original_env(plan, argv):
-    return ['bash', plan['shell'], '--package', plan['package']] + argv
+def original_env(plan):
+    """The original-code environment for the plan's package, or None if it
+    cannot be made (the reason's one line, and the build's progress, in
+    logs/build.log, as the original-code shell prints them)."""
+    sys.path.insert(0, SRC)
+    from exp_assignment2.original_env.environment import NoWorkspace, environment
+    from exp_assignment2.original_env.overlay.build import BuildFailed
+    path = os.path.join(plan['logs'], 'build.log')
+    with open(path, 'ab') as log:
+        saved = os.dup(2)
+        sys.stderr.flush()
+        os.dup2(log.fileno(), 2)        # what the build prints, and what it runs
+        try:
+            env = environment(plan['package'], bin_dir=plan.get('bin_dir'))
+            sys.stderr.write('[original-env] enabled: %s\n' % env['EXP2_ORIGINAL_ENV'])
+            return env
+        except (NoWorkspace, BuildFailed) as exc:
+            sys.stderr.write('[original-env] %s\n' % exc)
+            return None
+        except Exception as exc:        # a bug of ours: the grader's, said in the log
+            sys.stderr.write('[original-env] the environment could not be made: %r\n' % exc)
+            raise
+        finally:
+            sys.stderr.flush()
+            os.dup2(saved, 2)
+            os.close(saved)
 
 
-def start(plan, argv, log_name):
+def start(plan, env, argv, log_name):
+    """``argv`` started in ``env``, in a process group of its own, its output
+    in logs/LOG_NAME (where an OSError, such as no such program, is said too)."""
     log = open(os.path.join(plan['logs'], log_name), 'wb')
     try:
-        return subprocess.Popen(original_env(plan, argv), stdout=log, stderr=subprocess.STDOUT,
+        return subprocess.Popen(argv, stdout=log, stderr=subprocess.STDOUT, env=env,
                                 stdin=subprocess.DEVNULL, start_new_session=True)
+    except OSError as exc:
+        log.write(('%s: %s\n' % (argv[0], exc.strerror or exc)).encode())
+        raise
     finally:
         log.close()
 
@@ -81,16 +118,14 @@ def main(argv):
         stop.set()
     threading.Thread(target=wait_for_stop, daemon=True).start()
 
-    build = start(plan, ['true'], 'build.log')
-    while build.poll() is None and not stop.is_set():
-        time.sleep(0.2)
-    if build.poll() is None:
-        end_all([build])
-    emit('built', rc=build.returncode)
-    if build.returncode != 0:
+    # in this thread: the overlay's lock times out with SIGALRM; a build past
+    # the grader's limit ends with the sandbox
+    env = original_env(plan)
+    emit('built', rc=0 if env is not None else 1)
+    if env is None:
         return 0
 
-    procs = [start(plan, ['roscore', '-p', '11311'], 'roscore.log')]
+    procs = [start(plan, env, ['roscore', '-p', '11311'], 'roscore.log')]
     deadline = time.monotonic() + MASTER_WAIT
     while not master_up() and time.monotonic() < deadline and not stop.is_set():
         time.sleep(0.2)
@@ -106,7 +141,14 @@ def main(argv):
         except ValueError as exc:
             emit('exited', index=i, command=command, rc=None, error=str(exc))
             continue
-        proc = start(plan, words, 'command-%d.log' % i)
+        if not words:
+            emit('exited', index=i, command=command, rc=None, error='an empty command')
+            continue
+        try:
+            proc = start(plan, env, words, 'command-%d.log' % i)
+        except OSError as exc:      # no such program: as the shell's exec said
+            emit('exited', index=i, command=command, rc=127, error=str(exc))
+            continue
         commands.append((i, command, proc))
         emit('started', index=i, command=command, pid=proc.pid)
     while not stop.is_set():
