@@ -92,7 +92,7 @@ def compute(environ):
         notes.append('cv2 GUI: no DISPLAY, so cv2.imshow aborts the process as OpenCV does'
                      ' (use xvfb-run or QT_QPA_PLATFORM=offscreen)')
     # gazebo_ros, xacro, controller_manager, image_transport for the user's launch
-    # files (packages/README.md)
+    # files (stand_in_packages/README.md)
     notes.append('gazebo_ros, xacro, controller_manager, image_transport: stand-ins')
     return {
         'ROS_PACKAGE_PATH': _join(environ.get('EXP2_LAUNCH_PACKAGES') or
