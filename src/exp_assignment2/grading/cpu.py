@@ -6,7 +6,7 @@ import os
 CLOCK_TICKS = os.sysconf('SC_CLK_TCK')
 KINDS = (('simulator', ('scripts/simulator.py', '/gzserver')),
          ('grader', ('grading/inside.py', 'bwrap ', 'prlimit ')),
-         ('ROS', ('rosmaster', 'rosout', 'roslaunch', 'roscore', 'original_env/shell.sh',
+         ('ROS', ('rosmaster', 'rosout', 'roslaunch', 'roscore',
                   'spawn_model', 'spawner', 'robot_state_publisher')))
 
 

@@ -24,7 +24,6 @@ from exp_assignment2.sim.ground_truth import SOCKET_ENV, TOPICS_ENV
 # the repository itself (the workspace links to it)
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.realpath(__file__)))))
-SHELL = os.path.join(REPO, 'tools', 'original_env', 'shell.sh')
 INSIDE = os.path.join(REPO, 'src', 'exp_assignment2', 'grading', 'inside.py')
 OWN_NAME, SIM_PACKAGE = 'exp_assignment2', 'exp_assignment2_sim'   # see overlay/build.py
 BUILD_LIMIT = 900.0          # wall s for a build
@@ -101,7 +100,7 @@ class Run(object):
         os.chmod(self.sockets, 0o755)
 
     def _plan(self, package_dir, start):
-        plan = {'shell': SHELL, 'package': package_dir, 'commands': start.commands,
+        plan = {'package': package_dir, 'commands': start.commands,
                 'delay': float(self.settings.profile['delay']),
                 'logs': os.path.join(self.work, 'logs')}
         path = os.path.join(self.work, 'plan.json')
