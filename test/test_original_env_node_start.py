@@ -10,11 +10,10 @@ tools/original_env/shell.sh on the sourced workspace (tools/run test sources it)
 """
 import os
 import shutil
-import subprocess
 
 import pytest
 
-from test_original_env_tabs import free_port, sourced_workspace
+from test_original_env_tabs import free_port, run_in_original_env, sourced_workspace
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FIXTURE = os.path.join(REPO, 'test', 'fixtures', 'handed_in_pkg')
@@ -49,12 +48,7 @@ def test_python2_first_lines_and_lost_execute_bits_start_as_on_the_students_mach
         'echo "== roslaunch"; rm -f %s/*' % marks,
         'roslaunch -p %d handed_in_pkg handed_in.launch marks:=%s 2>&1' % (port, marks),
     ])
-    env = dict(os.environ, ROS_HOME=str(tmp_path / 'ros_home'), PYTHONUNBUFFERED='1',
-               EXP2_WS=workspace)
-    env['PATH'] = '/usr/bin:' + env.get('PATH', '')
-    proc = subprocess.run(['bash', os.path.join(REPO, 'tools', 'original_env', 'shell.sh'),
-                           'bash', '-c', script], env=env, stdout=subprocess.PIPE,
-                          stderr=subprocess.STDOUT, universal_newlines=True, timeout=300)
+    proc = run_in_original_env(script, tmp_path, workspace)
     out = proc.stdout
     assert proc.returncode == 0, out[-3000:]
     rosrun, roslaunch = out.split('== rosrun\n', 1)[1].split('== roslaunch\n', 1)

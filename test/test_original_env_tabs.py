@@ -52,6 +52,16 @@ def sourced_workspace():
     return None
 
 
+def run_in_original_env(script, tmp_path, workspace, timeout=300):
+    """A bash script run in the original-code shell (its ROS_HOME in tmp_path)."""
+    env = dict(os.environ, ROS_HOME=str(tmp_path / 'ros_home'), PYTHONUNBUFFERED='1',
+               EXP2_WS=workspace)
+    env['PATH'] = '/usr/bin:' + env.get('PATH', '')
+    return subprocess.run(['bash', os.path.join(REPO, 'tools', 'original_env', 'shell.sh'),
+                           'bash', '-c', script], env=env, stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, universal_newlines=True, timeout=timeout)
+
+
 def free_port():
     with socket.socket() as s:
         s.bind(('localhost', 0))
@@ -86,12 +96,7 @@ def test_every_way_of_starting_reads_python2s_indentation(package, tmp_path):
         'echo "== rosrun"; rosrun tabs_fixture tabs_node.py way rosrun 2>&1',
         'echo "== roslaunch"; roslaunch -p %d tabs_fixture tabs.launch 2>&1' % port,
     ])
-    env = dict(os.environ, ROS_HOME=str(tmp_path / 'ros_home'), PYTHONUNBUFFERED='1',
-               EXP2_WS=workspace)
-    env['PATH'] = '/usr/bin:' + env.get('PATH', '')
-    proc = subprocess.run(['bash', os.path.join(REPO, 'tools', 'original_env', 'shell.sh'),
-                           'bash', '-c', script], env=env, stdout=subprocess.PIPE,
-                          stderr=subprocess.STDOUT, universal_newlines=True, timeout=300)
+    proc = run_in_original_env(script, tmp_path, workspace)
     assert proc.returncode == 0, proc.stdout[-3000:]
     sections, name = {}, None
     for line in proc.stdout.splitlines():

@@ -89,14 +89,22 @@ def step_towards(body, goal, speed, dt, tolerance):
 
 
 class RecordingLog(object):
+    """A log that keeps its (level, text) lines (rospy's or the engine's calls)."""
+
     def __init__(self):
         self.lines = []
 
+    def _add(self, level, fmt, args):
+        self.lines.append((level, fmt % args if args else fmt))
+
     def info(self, fmt, *args):
-        self.lines.append(('info', fmt % args))
+        self._add('info', fmt, args)
 
     def warn(self, fmt, *args):
-        self.lines.append(('warn', fmt % args))
+        self._add('warn', fmt, args)
+
+    def error(self, fmt, *args):
+        self._add('error', fmt, args)
 
     def text(self):
         return '\n'.join(line for _, line in self.lines)

@@ -6,6 +6,7 @@ import pytest
 
 from exp_assignment2.sim.engine import Engine, SpawnError
 from exp_assignment2.sim.plugins.base import Plugin, PluginError
+from fakes import RecordingLog
 
 BOX = '''<robot name="box">%s
   <link name="base">
@@ -23,20 +24,6 @@ def box(gazebo=''):
 
 def plugin_tag(filename, options=''):
     return '<gazebo><plugin name="p" filename="%s">%s</plugin></gazebo>' % (filename, options)
-
-
-class Log(object):
-    def __init__(self):
-        self.lines = []
-
-    def info(self, text):
-        self.lines.append(('info', text))
-
-    def warn(self, text):
-        self.lines.append(('warn', text))
-
-    def error(self, text):
-        self.lines.append(('error', text))
 
 
 class Recorder(Plugin):
@@ -72,7 +59,8 @@ class Refuser(Plugin):
 @pytest.fixture
 def engine():
     Recorder.calls = []
-    eng = Engine(registry={'librecorder.so': Recorder, 'librefuse.so': Refuser}, log=Log(),
+    eng = Engine(registry={'librecorder.so': Recorder, 'librefuse.so': Refuser},
+                 log=RecordingLog(),
                  real_time_factor=0)
     yield eng
     eng.close()

@@ -12,6 +12,7 @@ import pytest
 from exp_assignment2.sim.bullet import p
 from exp_assignment2.sim.engine import Engine, SpawnError
 from exp_assignment2.sim.sdf import read_world
+from fakes import RecordingLog
 
 SAVED = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'data',
                      'worlds', 'saved_shelter.world')
@@ -46,23 +47,9 @@ def robot(footprint=None, wheel='0.2', tail='', gazebo=''):
                    gazebo)
 
 
-class Log(object):
-    def __init__(self):
-        self.lines = []
-
-    def info(self, text):
-        self.lines.append(('info', text))
-
-    def warn(self, text):
-        self.lines.append(('warn', text))
-
-    def error(self, text):
-        self.lines.append(('error', text))
-
-
 @pytest.fixture
 def engine():
-    eng = Engine(log=Log(), real_time_factor=0)
+    eng = Engine(log=RecordingLog(), real_time_factor=0)
     eng.spawn('ground', GROUND)
     yield eng
     eng.close()
