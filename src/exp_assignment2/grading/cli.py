@@ -10,7 +10,6 @@ import multiprocessing
 import os
 import signal
 import sys
-import time
 
 from exp_assignment2.grading import profiles, report, tasks
 from exp_assignment2.grading.cluster import Cluster, ClusterError, lost_result, payload, \
@@ -138,7 +137,7 @@ class _Deferred(object):
 def grade(runs, cluster, progress):
     """Every Run as a Dask task; Ctrl-C ends every run (on every worker) and returns."""
     from concurrent.futures import CancelledError
-    from distributed import KilledWorker
+    from distributed import KilledWorker, wait
     version = cluster.version
     for run in runs:
         if getattr(run, 'refused', None):       # the teacher's file is wrong about it
@@ -163,7 +162,10 @@ def grade(runs, cluster, progress):
                 if run.label in cluster.started and run.state == 'waiting':
                     run.state = 'running'
             progress.show(runs)
-            time.sleep(0.5)
+            try:        # until a run ends, or half a second for the progress line
+                wait(list(pending), timeout=0.5, return_when='FIRST_COMPLETED')
+            except TimeoutError:
+                pass
         progress.show(runs)
     except KeyboardInterrupt:
         progress.line('Ctrl-C: ending every run')

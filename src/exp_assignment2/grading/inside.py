@@ -101,8 +101,11 @@ def end_all(procs):
                 except OSError:
                     pass
         deadline = time.monotonic() + GRACE
-        while time.monotonic() < deadline and any(p.poll() is None for p in procs):
-            time.sleep(0.1)
+        for proc in procs:            # each waited on in turn, all within the grace
+            try:
+                proc.wait(timeout=max(0.0, deadline - time.monotonic()))
+            except subprocess.TimeoutExpired:
+                pass
 
 
 def main(argv):
@@ -127,8 +130,8 @@ def main(argv):
 
     procs = [start(plan, env, ['roscore', '-p', '11311'], 'roscore.log')]
     deadline = time.monotonic() + MASTER_WAIT
-    while not master_up() and time.monotonic() < deadline and not stop.is_set():
-        time.sleep(0.2)
+    while not master_up() and time.monotonic() < deadline and not stop.wait(0.2):
+        pass      # the master's port is all there is to watch
     emit('master', up=master_up())
     commands, exited = [], set()
     for i, command in enumerate(plan['commands']):

@@ -8,7 +8,6 @@ simulator's socket is in ``sockets/``, shown to it read-only.
 """
 import json
 import os
-import re
 import shutil
 import subprocess
 import threading
@@ -16,6 +15,7 @@ import time
 
 from exp_assignment2.grading import cpu, verdicts
 from exp_assignment2.grading.commands import Start
+from exp_assignment2.grading.run_files import directory_size, log_sizes, waits_on_wall_clock
 from exp_assignment2.grading.sandbox import Sandbox, SandboxError
 from exp_assignment2.grading.submissions import SubmissionError, package_name, unpack
 from exp_assignment2.grading.truth import TruthServer
@@ -29,37 +29,8 @@ OWN_NAME, SIM_PACKAGE = 'exp_assignment2', 'exp_assignment2_sim'   # see overlay
 BUILD_LIMIT = 900.0          # wall s for a build
 START_SLACK = 120.0          # wall s on top of the duration: set-up, starting, ending
 WORK_LIMIT = 2 * 1024 ** 3   # bytes the work directory may hold
-WALL_CLOCK = re.compile(r'\btime\.(sleep|time)\s*\(|\brospy\.Rate\b.*\bwall\b')
 # the environment a run starts with (the sandbox's is cleared)
 PASSED_ENV = ('PATH', 'LANG', 'LC_ALL', 'EXP2_WS', 'EXP2_TEST_JOBS')
-
-
-def waits_on_wall_clock(package_dir):
-    """[(file, line)] where the package's Python waits on or reads the wall clock."""
-    found = []
-    for root, dirs, files in os.walk(package_dir):
-        dirs[:] = [d for d in dirs if not d.startswith('.') and d not in ('build', 'devel')]
-        for name in files:
-            path = os.path.join(root, name)
-            if not name.endswith('.py') and not is_python_script(path):
-                continue
-            try:
-                with open(path, errors='replace') as f:
-                    for number, line in enumerate(f, 1):
-                        if WALL_CLOCK.search(line.split('#')[0]):
-                            found.append((os.path.relpath(path, package_dir), number))
-            except OSError:
-                continue
-    return found
-
-
-def is_python_script(path):
-    try:
-        with open(path, 'rb') as f:
-            first = f.readline(200)
-    except OSError:
-        return False
-    return first.startswith(b'#!') and b'python' in first
 
 
 class RunSettings(object):
@@ -88,6 +59,7 @@ class Run(object):
         self.sockets = os.path.join(self.dir, 'sockets')
         self.stop_event = stop_event or threading.Event()
         self.events, self.state = [], 'waiting'
+        self._news = threading.Event()      # the driver said something
         self.result = None
 
     # the run's files
@@ -189,8 +161,8 @@ class Run(object):
         events_path = os.path.join(self.record, 'events.jsonl')
         proc = box.start(['/usr/bin/python3', INSIDE, plan], stdout=subprocess.PIPE)
         events = self.events
-        reader = threading.Thread(target=self._read_events, args=(proc, events, events_path),
-                                  daemon=True)
+        reader = threading.Thread(target=self._read_events,
+                                  args=(proc, events, events_path, self._news), daemon=True)
         reader.start()
         duration = self.settings.duration
         wall_limit = duration / (rtf if rtf > 0 else 1.0) * 1.5 + START_SLACK
@@ -200,7 +172,8 @@ class Run(object):
         self.state = 'building'
         last_size_check = 0.0
         while proc.poll() is None:
-            time.sleep(0.25)
+            self._news.wait(0.25)       # a driver event, or the limits' next look
+            self._news.clear()
             now = time.monotonic()
             kinds = [e.get('event') for e in events]
             if 'built' in kinds and run_start is None:
@@ -271,7 +244,7 @@ class Run(object):
         return bool(started) and started <= exited
 
     @staticmethod
-    def _read_events(proc, events, path):
+    def _read_events(proc, events, path, news):
         with open(path, 'w') as out:
             for line in proc.stdout:
                 out.write(line)
@@ -283,6 +256,7 @@ class Run(object):
                     event = {'event': 'output', 'text': line.rstrip()[:500]}
                 if isinstance(event, dict):
                     events.append(event)
+                    news.set()
 
     def _finish(self, result):
         if 'verdict' not in result:
@@ -293,31 +267,3 @@ class Run(object):
             json.dump(result, f, indent=1, default=str)
         self.result = result
         return result
-
-
-def directory_size(path):
-    total = 0
-    for root, _dirs, files in os.walk(path):
-        for name in files:
-            try:
-                total += os.lstat(os.path.join(root, name)).st_size
-            except OSError:
-                pass
-    return total
-
-
-def log_sizes(work):
-    """{log path: size} now: what is read of the logs is what was written up to
-    the end of the run (a node's last words at shutdown are not its crash)."""
-    sizes = {}
-    for root, _dirs, files in os.walk(work):
-        if '/src' in root[len(work):][:4] or '/overlay' in root[len(work):][:8]:
-            continue
-        for name in files:
-            if name.endswith('.log'):
-                path = os.path.join(root, name)
-                try:
-                    sizes[os.path.relpath(path, work)] = os.path.getsize(path)
-                except OSError:
-                    pass
-    return sizes

@@ -62,6 +62,7 @@ class TruthServer(object):
         self.states = self.frames = self.topics = self.dropped = 0
         self.closed = threading.Event()
         self._lock = threading.Lock()          # the reader writes, close() closes
+        self._reader = None
         self._out = open(os.path.join(record_dir, 'truth.jsonl'), 'w')
         self._thread = threading.Thread(target=self._serve, name='truth', daemon=True)
         self._thread.start()
@@ -81,8 +82,9 @@ class TruthServer(object):
                 continue
             self.simulator = (pid, ' '.join(argv))
             self.connected.set()
-            threading.Thread(target=self._read, args=(conn,), name='truth-read',
-                             daemon=True).start()
+            self._reader = threading.Thread(target=self._read, args=(conn,),
+                                            name='truth-read', daemon=True)
+            self._reader.start()
 
     def _read(self, conn):
         conn.settimeout(0.5)
@@ -146,7 +148,8 @@ class TruthServer(object):
     def close(self):
         self.closed.set()
         self._thread.join(2.0)
-        time.sleep(0.6)       # the reader notices, writes its last line
+        if self._reader is not None:      # it notices within its 0.5 s timeout
+            self._reader.join(2.0)
         self.sock.close()
         with self._lock:
             self._out.close()
