@@ -6,7 +6,8 @@ import pytest
 
 from exp_assignment2.grading import profiles
 from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, \
-    readme_commands, start_for
+    readme_entries
+from exp_assignment2.grading.planning import resolve
 
 README = '''# My assignment
 
@@ -26,29 +27,38 @@ and in another `rosrun exp_assignment2 state_machine.py`, then watch it with
 
 def test_readme_commands_in_order_once(tmp_path):
     (tmp_path / 'README.md').write_text(README)
-    commands, notes, name = readme_commands(str(tmp_path))
+    entries, name = readme_entries(str(tmp_path))
     assert name == 'README.md'
-    assert commands == ['roslaunch exp_assignment2 gazebo_world.launch',
-                        'rosrun exp_assignment2 state_machine.py']
-    assert notes == ['rosrun rqt_image_view rqt_image_view: a viewer, left out of a '
-                     'headless run']
+    assert [(e['command'], e['kind']) for e in entries] == [
+        ('roslaunch exp_assignment2 gazebo_world.launch', 'ros'),
+        ('rosrun exp_assignment2 state_machine.py', 'ros'),
+        ('rosrun rqt_image_view rqt_image_view', 'watch')]
+
+
+def no_launch_files(requests, packages):
+    return {r['key']: {'error': 'not read in this test'} for r in requests}
 
 
 def test_start_from_teacher_readme_or_profile(tmp_path):
     (tmp_path / 'README.md').write_text(README)
+    profile = {'world_commands': [], 'default_commands': ['roslaunch {package} w.launch']}
     teacher = {'submissions': {'alice': {'commands': ['roslaunch a b.launch']}}}
-    start = start_for(str(tmp_path), 'exp_assignment2', 'alice', teacher, ['x'])
-    assert (start.commands, start.source) == (['roslaunch a b.launch'],
-                                              'grading.yaml (submissions: alice)')
-    start = start_for(str(tmp_path), 'exp_assignment2', 'bob', teacher, ['x'])
-    assert start.source == "the submission's README.md" and len(start.commands) == 2
+    got = resolve(str(tmp_path), 'exp_assignment2', 'alice', teacher, profile, set(),
+                  no_launch_files)
+    assert (got['commands'], got['commands_from']) == (['roslaunch a b.launch'],
+                                                       'grading.yaml (submissions: alice)')
+    got = resolve(str(tmp_path), 'exp_assignment2', 'bob', teacher, profile, set(),
+                  no_launch_files)
+    assert got['commands_from'] == "the submission's README.md" and len(got['commands']) == 2
+    assert [c['ran'] for c in got['readme_commands']] == [True, True, False]
+    assert '`rosrun rqt_image_view rqt_image_view`: only watches' in got['notes'][-1]
     empty = tmp_path / 'empty'
     empty.mkdir()
-    start = start_for(str(empty), 'my_pkg', 'carol', {}, ['roslaunch {package} w.launch'])
-    assert (start.commands, start.source) == (['roslaunch my_pkg w.launch'],
-                                              "the profile's default")
-    assert start.notes == ["no roslaunch or rosrun line in a README (there is none): "
-                           "the profile's default"]
+    got = resolve(str(empty), 'my_pkg', 'carol', {}, profile, set(), no_launch_files)
+    assert (got['commands'], got['commands_from']) == (['roslaunch my_pkg w.launch'],
+                                                       "the profile's default")
+    assert got['notes'] == ["no roslaunch or rosrun line to run in a README (there is none): "
+                            "the profile's default"]
 
 
 @pytest.mark.parametrize('text, message', [

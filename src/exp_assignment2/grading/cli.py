@@ -11,14 +11,13 @@ import os
 import signal
 import sys
 
-from exp_assignment2.grading import profiles, report, tasks
+from exp_assignment2.grading import planning, profiles, report, tasks
 from exp_assignment2.grading.cluster import Cluster, ClusterError, lost_result, payload, \
     refused_result, unpack_result
-from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, start_for
+from exp_assignment2.grading.commands import TeacherFileError
 from exp_assignment2.grading.progress import Progress
 from exp_assignment2.grading.runner import Run, RunSettings
-from exp_assignment2.grading.submissions import SubmissionError, discover, find_package, \
-    package_name
+from exp_assignment2.grading.submissions import SubmissionError
 
 EXIT_OK, EXIT_USAGE, EXIT_CLUSTER = 0, 2, 3
 
@@ -34,14 +33,17 @@ def parse_args(argv):
     parser.add_argument('--out', help='the report directory (default: ./grading-report)')
     parser.add_argument('--jobs', type=int, help='runs at once (default: as many as keep '
                         'every run at real time on this machine)')
+    # None: not given, so grading.yaml's value, else the profile's, holds (spec.settings)
     parser.add_argument('--duration', type=float, help='simulated s a run lasts '
-                        '(default: the profile\'s)')
+                        '(default: grading.yaml\'s, else the profile\'s)')
     parser.add_argument('--repeat', type=int, default=1, help='runs of each submission, '
                         'with seeds 1..R (default 1)')
     parser.add_argument('--seed', type=int, default=1, help='the first run\'s seed')
-    parser.add_argument('--profile', default='dog', help='dog, miro, or a profile file')
-    parser.add_argument('--real-time-factor', type=float, default=1.0,
-                        help='simulated s per wall s (default 1, as the code was written for)')
+    parser.add_argument('--profile', help='dog, miro, or a profile file (default: '
+                        'grading.yaml\'s, else dog)')
+    parser.add_argument('--real-time-factor', type=float,
+                        help='simulated s per wall s (default: grading.yaml\'s, else 1, as '
+                        'the code was written for)')
     parser.add_argument('--only', nargs='+', metavar='NAME', help='only these submissions')
     parser.add_argument('--scheduler', metavar='tcp://HOST:PORT',
                         help='run on the workers of this Dask scheduler (tools/run grade-worker)'
@@ -69,69 +71,18 @@ def default_jobs(profile):
 
 
 def plan_runs(args, profile, out, log):
-    """[Run] for every submission and repeat, in the folder's order."""
-    submissions, notes = discover(args.submissions)
-    for note in notes:
-        log(note)
-    folder = os.path.abspath(args.submissions)
-    teacher_path = os.path.join(folder, 'grading.yaml') if os.path.isdir(folder) else None
-    teacher = read_teacher_file(teacher_path)
-    if teacher.get('profile') and args.profile == 'dog':
-        profile = profiles.load(teacher['profile'])
-    if args.only:
-        unknown = set(args.only) - {s.name for s in submissions}
-        if unknown:
-            raise SubmissionError('--only: no submission named %s (there are: %s)' % (
-                ', '.join(sorted(unknown)), ', '.join(s.name for s in submissions)))
-        submissions = [s for s in submissions if s.name in args.only]
-    hidden = [folder if os.path.isdir(folder) else os.path.dirname(folder), out]
-    settings = RunSettings(profile, os.path.join(out, 'runs'), hidden=hidden,
-                           real_time_factor=teacher.get('real_time_factor',
-                                                        args.real_time_factor),
-                           duration=args.duration or teacher.get('duration'),
-                           version=tasks.package_version(), log=log)
-    if 'delay' in teacher:
-        profile['delay'] = teacher['delay']
+    """([Run] for every submission and repeat, in the folder's order; the profile)."""
+    specs, profile, whence = planning.plan(args, out, tasks.package_version(), log)
+    given = [key for key, where in sorted(whence.items()) if where == 'grading.yaml']
+    if given:
+        log('from grading.yaml: %s (the command line would be over it)' % ', '.join(given))
     runs = []
-    for submission in submissions:
-        own = (teacher.get('submissions') or {}).get(submission.name) or {}
-        if own.get('skip'):
-            log('%s: skipped (grading.yaml)' % submission.name)
-            continue
-        start = _start(submission, teacher, profile)
-        for r in range(args.repeat):
-            label = submission.name if args.repeat == 1 else '%s-r%d' % (submission.name, r + 1)
-            run = Run(settings, submission, start, seed=args.seed + r, label=label)
-            run.refused = teacher['errors'].get(submission.name) if teacher else None
-            runs.append(run)
+    for spec in specs:
+        settings = RunSettings(spec.profile, os.path.join(out, 'runs'), hidden=spec.hidden,
+                               real_time_factor=spec.real_time_factor, duration=spec.duration,
+                               version=spec.version, log=log)
+        runs.append(Run(settings, spec))
     return runs, profile
-
-
-def _start(submission, teacher, profile):
-    """The start commands, read from the submission where it is a directory
-    (an archive's README is read once it is unpacked, in the run)."""
-    package_dir = None
-    if submission.kind == 'dir':
-        try:
-            package_dir = find_package(submission.path)
-        except SubmissionError:
-            package_dir = None
-    if package_dir is None:
-        return _Deferred(submission, teacher, profile)
-    return start_for(package_dir, package_name(package_dir), submission.name, teacher,
-                     profile['default_commands'])
-
-
-class _Deferred(object):
-    """Start commands decided once an archive is unpacked (in the run's directory)."""
-
-    def __init__(self, submission, teacher, profile):
-        self.submission, self.teacher, self.profile = submission, teacher, profile
-        self.commands, self.source, self.notes = [], 'the submission\'s README', []
-
-    def resolve(self, package_dir):
-        return start_for(package_dir, package_name(package_dir), self.submission.name,
-                         self.teacher, self.profile['default_commands'])
 
 
 def grade(runs, cluster, progress):
@@ -140,10 +91,10 @@ def grade(runs, cluster, progress):
     from distributed import KilledWorker, wait
     version = cluster.version
     for run in runs:
-        if getattr(run, 'refused', None):       # the teacher's file is wrong about it
-            refused_result(run, run.refused)
+        if run.spec.refused:       # the teacher's file is wrong about it
+            refused_result(run, run.spec.refused)
     futures = {cluster.submit(payload(run, version)): run for run in runs
-               if not getattr(run, 'refused', None)}
+               if not run.spec.refused}
     pending = set(futures)
     try:
         while pending:
@@ -178,7 +129,7 @@ def main(argv=None):
     out = os.path.abspath(args.out or 'grading-report')
     log = lambda text: print('[grade] ' + text, file=sys.stderr, flush=True)  # noqa: E731
     try:
-        profile = profiles.load(args.profile)
+        profile = profiles.load(args.profile or 'dog')
         if args.report_only:
             summaries = report.write(out, profile)
             log(summary_line(summaries, out))

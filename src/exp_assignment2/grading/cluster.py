@@ -145,13 +145,11 @@ class Cluster(object):
 
 
 def payload(run, version):
-    """What a task needs to run one Run anywhere (see tasks.run_task)."""
+    """What a task needs to run one Run anywhere (see tasks.run_task): its
+    specification as a plain dict, and the submission's bytes."""
     kind, data = tasks.pack_submission(run.submission)
-    s = run.settings
-    return {'name': run.submission.name, 'path': run.submission.path, 'kind': kind,
-            'data': data, 'start': run.start, 'seed': run.seed, 'label': run.label,
-            'profile': s.profile, 'duration': s.duration, 'real_time_factor': s.real_time_factor,
-            'hidden': s.hidden, 'version': version}
+    return {'spec': run.spec.to_dict(), 'packed_kind': kind, 'data': data,
+            'label': run.label, 'version': version}
 
 
 def unpack_result(outcome, run, started):
@@ -178,10 +176,11 @@ def lost_result(run, error, started):
 def refused_result(run, reason, workers=()):
     """A run that did not run, for a reason of the grader's or the teacher's."""
     result = {'name': run.submission.name, 'label': run.label, 'seed': run.seed,
-              'verdict': 'grader_error', 'commands': getattr(run.start, 'commands', []),
-              'commands_from': getattr(run.start, 'source', ''),
+              'verdict': 'grader_error', 'commands': run.spec.commands,
+              'commands_from': run.spec.commands_from,
+              'readme_commands': run.spec.readme_commands,
               'reason': reason, 'workers': list(workers), 'truth': {'sim_time': 0.0},
-              'notes': []}
+              'notes': list(run.spec.notes)}
     os.makedirs(run.record, exist_ok=True)
     _rewrite(run, result)
     return result

@@ -1,10 +1,13 @@
-"""How a submission is started (no ROS): its README's ``roslaunch`` and
-``rosrun`` lines, a teacher's ``grading.yaml``, or the profile's default.
+"""What a submission's README and a teacher's ``grading.yaml`` say (no ROS).
 
-The README is read as a student writes one: commands in fenced blocks and in
-inline code, after a shell prompt or ``&&``, in their order, each once.
-Viewers a headless run has no use for (rqt, rviz, smach_viewer) are left out
-with a note.
+The README is read as a student writes one: commands in fenced blocks,
+indented blocks and inline code, after a shell prompt or ``&&``, in their
+order, each once. Each command found is one of: a ``roslaunch``/``rosrun``
+line (``ros``), a command for another shell that only watches (``watch``:
+``rostopic echo``, ``rqt_graph``, ``rviz``, ...), or a start script the README
+runs (``script``: ``./run.sh``, ``bash start.sh``), whose own ``roslaunch``/
+``rosrun`` lines (also inside ``gnome-terminal -x sh -c "..."`` or ``xterm -e``)
+follow it. What runs of them is decided in :mod:`.choose`.
 """
 import difflib
 import os
@@ -15,8 +18,15 @@ import yaml
 
 README_NAMES = ('README.md', 'README.MD', 'Readme.md', 'readme.md', 'README', 'README.txt',
                 'README.rst')
+# packages of programs that only watch (rosrun rqt_graph rqt_graph, ...)
 VIEWERS = re.compile(r'^(rqt\w*|rviz|smach_viewer|image_view|rqt_image_view|rqt_graph)$')
-COMMAND = re.compile(r'\b(roslaunch|rosrun)\s+[^`\n;|&]+')
+# one shell command: what follows a prompt, ``&&``, ``;`` or ``|``
+STARTS = re.compile(
+    r'(?:^|\s)((?:roslaunch|rosrun)\s.*'
+    r'|(?:rostopic\s+(?:echo|hz|list|info|bw|type|find)|rosnode\s+\w+|rosservice\s+(?:list|info)'
+    r'|rosparam\s+(?:get|list)|rqt\w*|rviz|smach_viewer|image_view)(?:\s.*)?'
+    r'|(?:\./|(?:bash|sh)\s+)(?![\w./-]*setup\.sh)[\w./-]+\.sh\b.*)$')
+IN_SCRIPT = re.compile(r'\b(?:roslaunch|rosrun)\s+[^`\n;|&"\']+')
 PLACEHOLDER = re.compile(r'[<>{}\[\]]|\.\.\.|\bYOUR_|\bpackage_name\b', re.IGNORECASE)
 
 TOP_KEYS = {'profile': str, 'duration': (int, float), 'commands': list, 'delay': (int, float),
@@ -26,16 +36,6 @@ ONE_KEYS = {'commands': list, 'skip': bool}
 
 class TeacherFileError(Exception):
     """One line naming the mistake in grading.yaml."""
-
-
-class Start(object):
-    """The commands to run for one submission and where they came from."""
-
-    def __init__(self, commands, source, notes=()):
-        self.commands, self.source, self.notes = list(commands), source, list(notes)
-
-    def as_dict(self):
-        return {'commands': self.commands, 'source': self.source, 'notes': self.notes}
 
 
 def _code_texts(text):
@@ -55,38 +55,97 @@ def _code_texts(text):
 def _clean(command):
     command = command.strip().rstrip('\\').strip()
     command = re.split(r'\s#', command)[0].strip()   # a shell comment after it
+    command = command.rstrip('&').strip()
+    for quote in '"\'':          # the end of a ``sh -c "..."`` around it
+        if command.count(quote) % 2:
+            command = command.rstrip(quote).strip()
     return command
 
 
-def readme_commands(package_dir):
-    """(commands, notes, readme name or None) from the package's README."""
+def kind_of(command):
+    """'ros', 'watch' or 'script' for a command line (None: none of them, or
+    a placeholder such as ``roslaunch <your_package> file.launch``)."""
+    try:
+        words = shlex.split(command)
+    except ValueError:
+        return None
+    if not words or PLACEHOLDER.search(command):
+        return None
+    if words[0] in ('roslaunch', 'rosrun'):
+        if len(words) < 3 and not (words[0] == 'roslaunch' and len(words) == 2
+                                   and words[1].endswith('.launch')):
+            return None
+        if words[0] == 'rosrun' and VIEWERS.match(words[1]):
+            return 'watch'
+        return 'ros'
+    if words[0].endswith('.sh') or len(words) > 1 and words[1].endswith('.sh'):
+        return 'script'
+    return 'watch'
+
+
+def _commands_in(code):
+    """The commands of one line of code, in their order."""
+    found = []
+    for segment in re.split(r'&&|;|\|\|?', code):
+        match = STARTS.search(segment.strip())
+        if match:
+            found.append(_clean(match.group(1)))
+    return found
+
+
+def script_commands(package_dir, command):
+    """(the script's path relative to the package or None, its ``roslaunch``/
+    ``rosrun`` lines) for ``./run.sh`` or ``bash start.sh``: found by its name
+    where the README says, else anywhere in the package."""
+    words = shlex.split(command)
+    rel = words[0] if words[0].endswith('.sh') else words[1]
+    path = os.path.normpath(os.path.join(package_dir, rel))
+    if not (path.startswith(package_dir + os.sep) and os.path.isfile(path)):
+        path = None
+        for root, dirs, files in os.walk(package_dir):
+            dirs.sort()
+            if os.path.basename(rel) in files:
+                path = os.path.join(root, os.path.basename(rel))
+                break
+    if path is None:
+        return None, []
+    with open(path, errors='replace') as f:
+        text = f.read(1 << 20)
+    commands = []
+    for line in text.splitlines():
+        if line.lstrip().startswith('#'):
+            continue
+        commands.extend(_clean(m.group(0)) for m in IN_SCRIPT.finditer(line))
+    return os.path.relpath(path, package_dir), commands
+
+
+def readme_entries(package_dir):
+    """([{'command', 'kind', 'from'}], readme name or None): every command
+    the README gives, in order, each once; a start script's lines follow it."""
     for name in README_NAMES:
         path = os.path.join(package_dir, name)
         if os.path.isfile(path):
             break
     else:
-        return [], [], None
+        return [], None
     with open(path, errors='replace') as f:
         text = f.read(1 << 20)
-    commands, notes = [], []
+    entries, seen = [], set()
+
+    def add(command, where):
+        kind = kind_of(command)
+        if kind and command not in seen:
+            seen.add(command)
+            entries.append({'command': command, 'kind': kind, 'from': where})
+            return kind
     for code in _code_texts(text):
-        for match in COMMAND.finditer(code):
-            command = _clean(match.group(0))
-            try:
-                words = shlex.split(command)
-            except ValueError:
-                continue
-            if len(words) < 3 and not (words[0] == 'roslaunch' and len(words) == 2
-                                       and words[1].endswith('.launch')):
-                continue
-            if PLACEHOLDER.search(command):
-                continue
-            if words[0] == 'rosrun' and VIEWERS.match(words[1]):
-                notes.append('%s: a viewer, left out of a headless run' % command)
-                continue
-            if command not in commands:
-                commands.append(command)
-    return commands, notes, name
+        for command in _commands_in(code):
+            if add(command, name) == 'script':
+                script, inside = script_commands(package_dir, command)
+                entries[-1]['script'] = script
+                for line in inside:
+                    add(line, script)
+    return entries, name
 
 
 def _check_keys(data, allowed, where):
@@ -136,22 +195,3 @@ def read_teacher_file(path):
             data['errors'][str(who)] = str(exc)
             del data['submissions'][who]
     return data
-
-
-def start_for(package_dir, package, submission_name, teacher, profile_commands,
-              teacher_file='grading.yaml'):
-    """The :class:`Start` of one submission: the teacher's commands for it,
-    the teacher's for all, its README's, or the profile's default (with the
-    package's name put in for ``{package}``)."""
-    own = (teacher.get('submissions') or {}).get(submission_name) or {}
-    if own.get('commands'):
-        return Start(own['commands'], '%s (submissions: %s)' % (teacher_file, submission_name))
-    if teacher.get('commands'):
-        return Start(teacher['commands'], '%s (commands)' % teacher_file)
-    commands, notes, readme = readme_commands(package_dir)
-    if commands:
-        return Start(commands, 'the submission\'s %s' % readme, notes)
-    notes.append('no roslaunch or rosrun line in %s: the profile\'s default'
-                 % (readme or 'a README (there is none)'))
-    return Start([c.format(package=package) for c in profile_commands],
-                 'the profile\'s default', notes)

@@ -152,6 +152,13 @@ def _page(summary, runs, runs_dir, pictures, profile):
         _e(main.get('commands_from')), _e('\n'.join(main.get('commands') or []))))
     for note in main.get('notes') or []:
         parts.append('<p>note: %s</p>' % _e(note))
+    if main.get('readme_commands'):     # every README command: ran, or left out and why
+        parts.append('<h3>The README\'s commands</h3><table><tr><th>command</th><th></th>'
+                     '<th>why</th></tr>' + ''.join(
+                         '<tr><td><code>%s</code>%s</td><td>%s</td><td>%s</td></tr>' % (
+                             _e(c['command']), ' (in %s)' % _e(c['from']) if c.get('from')
+                             else '', 'ran' if c['ran'] else 'left out', _e(c['why']))
+                         for c in main['readme_commands']) + '</table>')
     for cut in main.get('cut') or []:     # what its worker did not send back whole
         parts.append('<p>cut from what the worker sent back: %s</p>' % _e(cut))
     if summary['checks']:

@@ -14,10 +14,10 @@ import threading
 import time
 
 from exp_assignment2.grading import cpu, verdicts
-from exp_assignment2.grading.commands import Start
 from exp_assignment2.grading.run_files import directory_size, log_sizes, waits_on_wall_clock
 from exp_assignment2.grading.sandbox import Sandbox, SandboxError
-from exp_assignment2.grading.submissions import SubmissionError, package_name, unpack
+from exp_assignment2.grading.submissions import Submission, SubmissionError, package_name, \
+    unpack
 from exp_assignment2.grading.truth import TruthServer
 from exp_assignment2.sim.ground_truth import SOCKET_ENV, TOPICS_ENV
 
@@ -25,7 +25,6 @@ from exp_assignment2.sim.ground_truth import SOCKET_ENV, TOPICS_ENV
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.realpath(__file__)))))
 INSIDE = os.path.join(REPO, 'src', 'exp_assignment2', 'grading', 'inside.py')
-OWN_NAME, SIM_PACKAGE = 'exp_assignment2', 'exp_assignment2_sim'   # see overlay/build.py
 BUILD_LIMIT = 900.0          # wall s for a build
 START_SLACK = 120.0          # wall s on top of the duration: set-up, starting, ending
 WORK_LIMIT = 2 * 1024 ** 3   # bytes the work directory may hold
@@ -48,11 +47,14 @@ class RunSettings(object):
 
 
 class Run(object):
-    """One run: ``go()`` does it and returns its result (also in run.json)."""
+    """One run of a :class:`~exp_assignment2.grading.spec.RunSpec` (its
+    commands exactly): ``go()`` does it and returns its result (also in run.json)."""
 
-    def __init__(self, settings, submission, start, seed=1, label=None, stop_event=None):
-        self.settings, self.submission, self.start = settings, submission, start
-        self.seed, self.label = seed, label or submission.name
+    def __init__(self, settings, spec, submission=None, stop_event=None):
+        self.settings, self.spec = settings, spec
+        # where the submission is here (a worker's copy), or where the spec says
+        self.submission = submission or Submission(spec.name, spec.path, spec.kind)
+        self.seed, self.label = spec.seed, spec.label
         self.dir = os.path.join(settings.runs_dir, self.label)
         self.work = os.path.join(self.dir, 'work')
         self.record = os.path.join(self.dir, 'record')
@@ -71,8 +73,8 @@ class Run(object):
             os.makedirs(path, exist_ok=True)
         os.chmod(self.sockets, 0o755)
 
-    def _plan(self, package_dir, start):
-        plan = {'package': package_dir, 'commands': start.commands,
+    def _plan(self, package_dir):
+        plan = {'package': package_dir, 'commands': self.spec.commands,
                 'delay': float(self.settings.profile['delay']),
                 'logs': os.path.join(self.work, 'logs')}
         path = os.path.join(self.work, 'plan.json')
@@ -109,27 +111,18 @@ class Run(object):
     def go(self):
         started = time.time()
         self._fresh_dirs()
+        spec = self.spec
         result = {'name': self.submission.name, 'label': self.label, 'seed': self.seed,
                   'version': self.settings.version, 'profile': self.settings.profile['name'],
-                  'started': started, 'commands': self.start.commands,
-                  'commands_from': self.start.source, 'notes': list(self.start.notes)}
+                  'started': started, 'commands': list(spec.commands),
+                  'commands_from': spec.commands_from, 'notes': list(spec.notes),
+                  'readme_commands': list(spec.readme_commands)}
         try:
             package_dir = unpack(self.submission, os.path.join(self.work, 'src'))
         except SubmissionError as exc:
             result.update(verdict='not_built', reason='the submission: %s' % exc)
             return self._finish(result)
-        package = result['package'] = package_name(package_dir)
-        if hasattr(self.start, 'resolve'):       # an archive's README, now unpacked
-            self.start = self.start.resolve(package_dir)
-        # the world the assignment runs in (MiRo's: Stage's stand-in), then the
-        # submission's own; {sim} is this package's name beside the student's
-        names = {'package': package, 'sim': SIM_PACKAGE if package == OWN_NAME else OWN_NAME}
-        world = [c.format(**names) for c in self.settings.profile['world_commands']]
-        self.start = Start(world + [c.replace('{sim}', names['sim']) for c in self.start.commands],
-                           self.start.source + (' after the profile\'s world' if world else ''),
-                           self.start.notes)
-        result.update(commands=self.start.commands, commands_from=self.start.source,
-                      notes=list(self.start.notes))
+        result['package'] = package_name(package_dir)
         rtf = self.settings.real_time_factor
         if rtf != 1.0:
             wall = waits_on_wall_clock(package_dir)
@@ -145,7 +138,7 @@ class Run(object):
             result['limits'] = box.groups.notes or ['memory %d MB, %d processes' % (
                 self.settings.profile['memory_limit_mb'], self.settings.profile['process_limit'])]
             truth = TruthServer(os.path.join(self.sockets, 'truth.sock'), self.record)
-            self._monitor(box, truth, self._plan(package_dir, self.start), rtf, result)
+            self._monitor(box, truth, self._plan(package_dir), rtf, result)
         except SandboxError as exc:
             result.update(verdict='grader_error', reason=str(exc))
         return self._finish(result)
@@ -199,7 +192,7 @@ class Run(object):
                     truth.latest is None or now - truth.latest[1] > 10):
                 reason = 'all_exited'
             elif run_start is not None and truth.latest is None and \
-                    now - run_start > 90 + len(self.start.commands) * self.settings.profile['delay']:
+                    now - run_start > 90 + len(self.spec.commands) * self.settings.profile['delay']:
                 reason = 'no_simulator'
             elif now - last_size_check > 5:
                 last_size_check = now

@@ -16,6 +16,7 @@ import tempfile
 import threading
 
 from exp_assignment2.grading.runner import Run, RunSettings
+from exp_assignment2.grading.spec import RunSpec
 from exp_assignment2.grading.submissions import MAX_UNPACKED, Submission, copy_dir
 
 RETURN_LIMIT = 64 * 1024 * 1024        # bytes of a run's directory sent back
@@ -123,18 +124,18 @@ def run_task(payload, stop=None, scratch_root=None):
                               'refuses the run' % (mine, payload['version']))
     scratch = tempfile.mkdtemp(prefix='exp2-grade-', dir=scratch_root)
     try:
-        source = os.path.join(scratch, 'submission' + {'zip': '.zip', 'tar': '.tar.gz'}[
-            payload['kind']])
+        spec = RunSpec.from_dict(payload['spec'])
+        kind = payload['packed_kind']
+        source = os.path.join(scratch, 'submission' + {'zip': '.zip', 'tar': '.tar.gz'}[kind])
         with open(source, 'wb') as f:
             f.write(payload['data'])
-        submission = Submission(payload['name'], source, payload['kind'])
-        submission.display_path = payload['path']
-        settings = RunSettings(payload['profile'], os.path.join(scratch, 'runs'),
-                               hidden=payload['hidden'] + [scratch],
-                               real_time_factor=payload['real_time_factor'],
-                               duration=payload['duration'], version=mine)
-        run = Run(settings, submission, payload['start'], seed=payload['seed'],
-                  label=payload['label'])
+        submission = Submission(spec.name, source, kind)
+        submission.display_path = spec.path
+        settings = RunSettings(spec.profile, os.path.join(scratch, 'runs'),
+                               hidden=spec.hidden + [scratch],
+                               real_time_factor=spec.real_time_factor,
+                               duration=spec.duration, version=mine)
+        run = Run(settings, spec, submission=submission)
         watcher = None
         if stop is not None:
             def watch():

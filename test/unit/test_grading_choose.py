@@ -1,0 +1,230 @@
+"""A README read as a person reads it (exp_assignment2.grading.choose,
+.planning.resolve), the settings' one precedence and the run's specification
+(.spec); launch files' nodes given by a fake reader, so no ROS and no master.
+One test reads real launch files in the sandbox (launch_nodes.read)."""
+import json
+import os
+import shutil
+
+import pytest
+
+from exp_assignment2.grading import launch_nodes
+from exp_assignment2.grading.planning import resolve
+from exp_assignment2.grading.spec import RunSpec, settings
+
+DOG = {'world_commands': [], 'default_commands': ['roslaunch {package} gazebo_world.launch']}
+MIRO = {'world_commands': ['roslaunch {sim} miro_world.launch'],
+        'default_commands': ['rosrun {package} state_manager.py']}
+
+
+def package(tmp_path, readme, files=()):
+    """A package called my_pkg with a README and files {path: text}."""
+    root = tmp_path / 'my_pkg'
+    root.mkdir()
+    (root / 'package.xml').write_text('<package><name>my_pkg</name></package>')
+    (root / 'README.md').write_text(readme)
+    for rel, text in dict(files).items():
+        (root / rel).parent.mkdir(parents=True, exist_ok=True)
+        (root / rel).write_text(text)
+    return str(root)
+
+
+def reader(nodes, seen=None):
+    """A fake launch reader: {file name: [node names]} (absent: unreadable)."""
+    def read(requests, packages):
+        if seen is not None:
+            seen.append((requests, packages))
+        return {r['key']: {'nodes': nodes[r['file']]} if r.get('file') in nodes else
+                {'error': 'XmlParseException: bad'} for r in requests}
+    return read
+
+
+def why(got):
+    return {c['command']: (c['ran'], c['why']) for c in got['readme_commands']}
+
+
+def test_a_second_world_is_an_alternative_by_its_nodes(tmp_path):
+    root = package(tmp_path, '```\nroslaunch my_pkg random.launch\n'
+                             'roslaunch my_pkg fixed.launch\n```\n')
+    got = resolve(root, 'my_pkg', 'a', {}, DOG, set(), reader(
+        {'random.launch': ['/gazebo', '/dog'], 'fixed.launch': ['/gazebo', '/dog']}))
+    assert got['commands'] == ['roslaunch my_pkg random.launch']
+    assert why(got)['roslaunch my_pkg fixed.launch'] == (
+        False, 'left out: also starts /gazebo, an alternative to '
+               '`roslaunch my_pkg random.launch`')
+    assert got['notes'] == ['`roslaunch my_pkg fixed.launch`: left out: also starts /gazebo, '
+                            'an alternative to `roslaunch my_pkg random.launch`']
+
+
+def test_everything_then_the_same_nodes_in_two_terminals(tmp_path):
+    root = package(tmp_path, 'Run `roslaunch my_pkg everything.launch`; alternatively, in two '
+                             'terminals, `rosrun my_pkg dog.py` and `rosrun my_pkg ball.py`, '
+                             'then `rosrun my_pkg dog.py __name:=dog2`.\n',
+                   {'scripts/dog.py': "import rospy\nrospy.init_node('dog')\n",
+                    'scripts/ball.py': 'import rospy\nrospy.init_node("ball_mover", '
+                                       'disable_signals=True)\n'})
+    got = resolve(root, 'my_pkg', 'a', {}, DOG, set(), reader(
+        {'everything.launch': ['/gazebo', '/dog', '/ball_mover']}))
+    assert got['commands'] == ['roslaunch my_pkg everything.launch',
+                               'rosrun my_pkg dog.py __name:=dog2']
+    assert why(got)['rosrun my_pkg dog.py'][1].startswith('left out: also starts /dog, an ')
+    assert why(got)['rosrun my_pkg ball.py'][1].startswith('left out: also starts /ball_mover')
+
+
+def test_a_cpp_node_is_named_by_its_ros_init(tmp_path):
+    root = package(tmp_path, '    rosrun my_pkg counter\n    rosrun my_pkg counter2\n', {
+        'CMakeLists.txt': 'add_executable(counter src/c.cpp)\nadd_executable(counter2 src/d.cpp)\n',
+        'src/c.cpp': 'int main(int c, char** v) { ros::init(c, v, "counter"); }',
+        'src/d.cpp': 'int main(int c, char** v) { ros::init(c, v, "counter"); }'})
+    got = resolve(root, 'my_pkg', 'a', {}, DOG, set(), reader({}))
+    assert got['commands'] == ['rosrun my_pkg counter']
+
+
+def test_a_readme_naming_another_package_runs_the_submissions_own(tmp_path):
+    root = package(tmp_path, '```\nroslaunch assignment2 gazebo_world.launch\n'
+                             'rosrun assignment2 dog.py\nrosrun gazebo_ros spawn_model x\n```\n',
+                   {'launch/gazebo_world.launch': '<launch/>', 'scripts/dog.py': ''})
+    seen = []
+    got = resolve(root, 'my_pkg', 'a', {}, DOG, {'gazebo_ros'},
+                  reader({'gazebo_world.launch': ['/gazebo']}, seen))
+    assert got['commands'] == ['roslaunch my_pkg gazebo_world.launch', 'rosrun my_pkg dog.py',
+                               'rosrun gazebo_ros spawn_model x']
+    assert why(got)['roslaunch assignment2 gazebo_world.launch'] == (
+        True, "there is no package assignment2: runs the submission's own (package.xml "
+              "names it my_pkg)")
+    # $(find assignment2) in its launch files is the submission too
+    assert seen[0][1]['assignment2'] == root and seen[0][1]['my_pkg'] == root
+
+
+def test_a_package_missing_everywhere_stays_as_written(tmp_path):
+    root = package(tmp_path, '`roslaunch other_pkg world.launch`\n')
+    got = resolve(root, 'my_pkg', 'a', {}, DOG, set(), reader({}))
+    assert got['commands'] == ['roslaunch other_pkg world.launch']
+
+
+def test_commands_that_only_watch_are_left_out(tmp_path):
+    root = package(tmp_path, '```\n$ roslaunch my_pkg w.launch\n$ rostopic echo /odom\n'
+                             'rqt_graph\nrosrun rviz rviz\nrosnode list | grep dog\n'
+                             'rostopic hz /camera/image_raw\n```\n')
+    got = resolve(root, 'my_pkg', 'a', {}, DOG, set(), reader({'w.launch': ['/gazebo']}))
+    assert got['commands'] == ['roslaunch my_pkg w.launch']
+    assert [c['ran'] for c in got['readme_commands']] == [True] + [False] * 5
+    assert set(why(got)['rqt_graph']) == {
+        False, 'only watches (a command for another shell): left out'}
+
+
+RUN_SH = '''#!/bin/bash
+# start everything, each in its terminal
+gnome-terminal -x sh -c "rosrun stage_ros stageros $(rospack find my_pkg)/w.world; bash"
+sleep 2
+gnome-terminal -x sh -c "rosrun my_pkg state_manager.py; bash"
+xterm -e 'roslaunch my_pkg miro.launch' &
+'''
+
+
+def test_a_start_script_is_read_for_its_commands(tmp_path):
+    root = package(tmp_path, 'Start it with `./run.sh`\n', {'run.sh': RUN_SH})
+    got = resolve(root, 'my_pkg', 'a', {}, MIRO, set(), reader({'miro.launch': ['/miro']}))
+    assert got['commands'] == ['roslaunch exp_assignment2 miro_world.launch',
+                               'rosrun my_pkg state_manager.py',
+                               'roslaunch my_pkg miro.launch']
+    assert got['commands_from'] == "the submission's README.md after the profile's world"
+    listed = got['readme_commands']
+    assert listed[0] == {'command': './run.sh', 'ran': False, 'why': 'a start script: its '
+                         'roslaunch/rosrun lines are read, not the script run'}
+    assert listed[1] == {'command': 'rosrun stage_ros stageros $(rospack find my_pkg)/w.world',
+                         'ran': False, 'from': 'run.sh',
+                         'why': "a simulator the profile's world replaces: left out"}
+    assert [c['ran'] for c in listed[2:]] == [True, True]
+
+
+def test_without_a_world_in_the_profile_the_students_simulator_runs(tmp_path):
+    root = package(tmp_path, '`bash run.sh`\n', {'run.sh': RUN_SH})
+    got = resolve(root, 'my_pkg', 'a', {}, DOG, set(), reader({'miro.launch': ['/miro']}))
+    assert got['commands'][0].startswith('rosrun stage_ros stageros')
+
+
+def test_an_unreadable_launch_file_runs_and_is_said(tmp_path):
+    root = package(tmp_path, '`roslaunch my_pkg broken.launch`\n')
+    got = resolve(root, 'my_pkg', 'a', {}, DOG, set(), reader({}))
+    assert got['commands'] == ['roslaunch my_pkg broken.launch']
+    assert got['notes'] == ['`roslaunch my_pkg broken.launch`: its launch file was not read '
+                            '(XmlParseException: bad): run, not compared with the others']
+
+
+def test_package_and_sim_are_put_in_every_command(tmp_path):
+    root = package(tmp_path, 'nothing to run\n')
+    got = resolve(root, 'exp_assignment2', 'a', {'commands': ['roslaunch {sim} x.launch',
+                                                              'rosrun {package} y.py']},
+                  MIRO, set(), reader({}))
+    assert got['commands'] == ['roslaunch exp_assignment2_sim miro_world.launch',
+                               'roslaunch exp_assignment2_sim x.launch',
+                               'rosrun exp_assignment2 y.py']
+
+
+PROFILE = {'name': 'dog', 'duration': 200, 'delay': 5}
+
+
+@pytest.mark.parametrize('cli, teacher, expected', [
+    ({}, {}, ('dog', 200.0, 1.0, 5)),
+    ({}, {'profile': 'miro', 'duration': 60, 'real_time_factor': 2, 'delay': 3},
+     ('miro', 60.0, 2.0, 3)),
+    ({'profile': 'dog', 'duration': 30, 'real_time_factor': 4},
+     {'profile': 'miro', 'duration': 60, 'real_time_factor': 2}, ('dog', 30.0, 4.0, 5)),
+    ({'duration': 30}, {'real_time_factor': 2}, ('dog', 30.0, 2.0, 5)),
+    ({'real_time_factor': 3}, {'duration': 90}, ('dog', 90.0, 3.0, 5)),
+])
+def test_command_line_over_grading_yaml_over_the_profile(cli, teacher, expected):
+    profiles = {'dog': PROFILE, 'miro': dict(PROFILE, name='miro', duration=400, delay=7)}
+    chosen, where = settings(dict(dict.fromkeys(['profile', 'duration', 'real_time_factor']),
+                                  **cli), teacher, profiles.__getitem__)
+    if expected[0] == 'miro' and 'delay' not in teacher:
+        expected = expected[:3] + (7,)
+    assert (chosen['profile']['name'], chosen['duration'], chosen['real_time_factor'],
+            chosen['profile']['delay']) == expected
+    assert where['duration'] == ('the command line' if 'duration' in cli else 'grading.yaml'
+                                 if 'duration' in teacher else 'the profile')
+
+
+def test_a_spec_goes_to_a_worker_as_plain_json():
+    spec = RunSpec(name='ann', path='/class/ann.zip', kind='zip', seed=3, profile=PROFILE,
+                   real_time_factor=2, hidden=['/class'], version='0.1.0',
+                   commands=['roslaunch p w.launch'], commands_from="the submission's README.md",
+                   readme_commands=[{'command': 'rqt_graph', 'ran': False, 'why': 'watches'}])
+    assert spec.label == 'ann' and spec.duration == 200
+    again = RunSpec.from_dict(json.loads(json.dumps(spec.to_dict())))
+    assert again == spec and again.to_dict() == spec.to_dict()
+    with pytest.raises(TypeError):
+        RunSpec(name='x', start='what')
+
+
+EVAL = '''<launch><arg name="x" value="$(eval open('{marker}2', 'w').write('x') or 1)"/>
+  <node name="x" pkg="my_pkg" type="x.py"/></launch>'''
+LAUNCH = '''<launch>
+  <param name="pwned" command="touch {marker}"/>
+  <include file="$(find assignment2)/launch/inner.launch"/>
+  <group ns="robot"><node name="dog" pkg="my_pkg" type="dog.py"/></group>
+</launch>
+'''
+
+
+@pytest.mark.skipif(not shutil.which('bwrap'), reason='needs bubblewrap')
+def test_launch_files_are_read_by_roslaunch_in_a_sandbox(tmp_path):
+    pytest.importorskip('roslaunch')
+    marker = tmp_path / 'outside' / 'marker'
+    marker.parent.mkdir()
+    root = package(tmp_path, '', {
+        'launch/world.launch': LAUNCH.format(marker=marker),
+        'launch/eval.launch': EVAL.format(marker=marker),
+        'launch/inner.launch': '<launch><node name="gazebo" pkg="gazebo_ros" type="gzserver"/>'
+                               '</launch>'})
+    got = launch_nodes.read({'launches': [
+        {'key': '0', 'package': 'my_pkg', 'file': 'world.launch', 'args': []},
+        {'key': '1', 'package': 'my_pkg', 'file': 'none.launch'},
+        {'key': '2', 'package': 'my_pkg', 'file': 'eval.launch'}],
+        'packages': {'my_pkg': root, 'assignment2': root}}, shown=[root],
+        hidden=[str(marker.parent)])
+    assert got['0'] == {'nodes': ['/gazebo', '/robot/dog']}
+    assert got['1']['error'].startswith('OSError: my_pkg has no none.launch')
+    assert got['2'] == {'nodes': ['/x']}    # its eval ran in the sandbox: what it wrote is gone
+    assert os.listdir(str(marker.parent)) == []      # nothing it ran wrote here
