@@ -19,7 +19,8 @@ DOG = os.path.join('scripts', 'dog.py')
 # name -> expected verdict
 EXPECTED = {'works': 'passed', 'tabs': 'passed', 'cpp_broken': 'not_built',
             'raises': 'crashed', 'idle': 'failed_checks', 'hostile': None,
-            'zipped': 'passed', 'tarred': 'passed'}
+            'zipped': 'passed', 'tarred': 'passed',
+            'alternatives': 'passed', 'other_name': 'passed'}
 
 RAISES = '''#!/usr/bin/env python3
 import rospy
@@ -92,6 +93,45 @@ subprocess.run(['killall', 'python3'])
 while True:
     time.sleep(1)
 """
+
+
+# "everything.launch; alternatively these two in two terminals", and a world with
+# the ball at random or at a fixed place: one world runs, the rest are noted
+ALTERNATIVES = """# My dog
+
+Start everything with:
+
+    roslaunch exp_assignment2 everything.launch
+
+Alternatively, in two terminals:
+
+    roslaunch exp_assignment2 world_random.launch
+    rosrun exp_assignment2 dog.py
+
+For the ball at a fixed place: `roslaunch exp_assignment2 world_fixed.launch`
+"""
+# written before the package was renamed in package.xml (exp_assignment2)
+OTHER_NAME = """# My dog
+
+```
+roslaunch assignment2 gazebo_world.launch
+```
+"""
+
+
+def _alternatives(dest):
+    launch = os.path.join(dest, 'launch')
+    with open(os.path.join(launch, 'gazebo_world.launch')) as f:
+        everything = f.read()
+    world = re.sub(r'\n  <node name="dog".*?/>\n', '\n', everything)
+    assert world != everything
+    os.rename(os.path.join(launch, 'gazebo_world.launch'),
+              os.path.join(launch, 'everything.launch'))
+    for name, text in (('world_random.launch', world),
+                       ('world_fixed.launch', world.replace('-x 4 -y 1.5', '-x 3 -y -2'))):
+        with open(os.path.join(launch, name), 'w') as f:
+            f.write(text)
+    _replace(dest, 'README.md', ALTERNATIVES)
 
 
 def _package(dest):
@@ -192,6 +232,10 @@ def make_folder(dest, names=None):
             _replace(package, DOG, IDLE)
         elif name == 'hostile':
             _replace(package, DOG, HOSTILE)
+        elif name == 'alternatives':
+            _alternatives(package)
+        elif name == 'other_name':
+            _replace(package, 'README.md', OTHER_NAME)
     shutil.rmtree(scratch, ignore_errors=True)
     return dest
 

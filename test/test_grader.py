@@ -4,8 +4,8 @@
 
 on the fixture folder (test/grading_fixtures.py: a dog that works, one with
 Python 2's tabs, a C++ node that does not compile, a node that raises at
-start, one that never moves, a hostile one, and the dog as a .zip and as a
-.tar.gz). Each ends with its expected verdict; the folder and everything
+start, one that never moves, a hostile one, the dog as a .zip and as a
+.tar.gz, a README offering alternatives and one naming another package). Each ends with its expected verdict; the folder and everything
 outside the runs' directories are unchanged; the hostile run costs only its
 own verdict (the dog graded alone gets the verdict it gets beside it); every
 process of every run is gone; the report's pages open in headless Chromium
@@ -72,8 +72,8 @@ def test_each_submission_gets_its_verdict(graded):
         'dog-5 died (exit code 1): RuntimeError: the dog has no legs'
     assert graded['by_name']['idle']['reason'].startswith('failed: reaches the ball')
     summary = graded['proc'].stdout.strip().splitlines()[-1]
-    assert re.match(r'\[grade\] graded 8 submissions: 4 passed, 1 failed_checks, \d crashed',
-                    summary) or 'graded 8 submissions' in summary, summary
+    assert re.match(r'\[grade\] graded 10 submissions: 6 passed, 1 failed_checks, \d crashed',
+                    summary) or 'graded 10 submissions' in summary, summary
 
 
 def test_a_report_says_where_commands_came_from_and_how_to_repeat(graded):
@@ -86,6 +86,27 @@ def test_a_report_says_where_commands_came_from_and_how_to_repeat(graded):
     assert checks['reaches the ball']['passed'] and checks['reaches the ball']['value'] >= 1
     assert checks['head turns at the ball']['value'] >= 0.6
     assert graded['runs']['works']['truth']['frames'] > 0
+
+
+def test_a_readme_is_read_as_a_person_reads_it(graded):
+    """One world of the README's alternatives runs, the others are noted; a
+    README naming another package runs the submission's own."""
+    alternatives = graded['runs']['alternatives']
+    assert alternatives['commands'] == ['roslaunch exp_assignment2 everything.launch']
+    everything = 'an alternative to `roslaunch exp_assignment2 everything.launch`'
+    assert alternatives['notes'][:3] == [
+        '`roslaunch exp_assignment2 world_random.launch`: left out: also starts /gazebo, '
+        + everything,
+        '`rosrun exp_assignment2 dog.py`: left out: also starts /dog, ' + everything,
+        '`roslaunch exp_assignment2 world_fixed.launch`: left out: also starts /gazebo, '
+        + everything]
+    assert [c['ran'] for c in alternatives['readme_commands']] == [True, False, False, False]
+    other = graded['runs']['other_name']
+    assert other['commands'] == ['roslaunch exp_assignment2 gazebo_world.launch']
+    assert other['notes'][0].startswith('`roslaunch assignment2 gazebo_world.launch`: there '
+                                        'is no package assignment2: runs the submission')
+    with open(os.path.join(graded['out'], 'pages', 'alternatives.html')) as f:
+        assert 'left out: also starts /gazebo' in f.read()
 
 
 def test_the_hostile_submission_costs_only_its_own_verdict(graded, tmp_path):
@@ -124,7 +145,7 @@ def test_the_report_opens_in_a_browser_with_every_image(graded, tmp_path):
     pages = [os.path.join(out, 'index.html')] + [
         os.path.join(out, 'pages', n) for n in sorted(os.listdir(os.path.join(out, 'pages')))
         if n.endswith('.html')]
-    assert len(pages) == 9
+    assert len(pages) == 11
     browser = shutil.which('chromium')
     assert browser, 'chromium is not installed (tools/run test installs it)'
     for page in pages:
@@ -135,9 +156,9 @@ def test_the_report_opens_in_a_browser_with_every_image(graded, tmp_path):
         assert 'data-images-missing="0"' in proc.stdout, (page, proc.stdout[:500])
     with open(pages[0]) as f:
         index = f.read()
-    assert index.count('<tr><td><a href="pages/') == 8
+    assert index.count('<tr><td><a href="pages/') == 10
     with open(os.path.join(out, 'grades.csv')) as f:
-        assert len(f.read().strip().splitlines()) == 9
+        assert len(f.read().strip().splitlines()) == 11
 
 
 def test_the_report_is_made_again_without_running(graded):
@@ -147,7 +168,7 @@ def test_the_report_is_made_again_without_running(graded):
                           universal_newlines=True, timeout=300)
     assert proc.returncode == 0, proc.stdout[-2000:]
     assert os.path.exists(os.path.join(graded['out'], 'index.html'))
-    assert 'graded 8 submissions' in proc.stdout
+    assert 'graded 10 submissions' in proc.stdout
 
 
 def test_a_miro_submission_under_the_miro_profile(tmp_path):

@@ -228,3 +228,35 @@ def test_launch_files_are_read_by_roslaunch_in_a_sandbox(tmp_path):
     assert got['1']['error'].startswith('OSError: my_pkg has no none.launch')
     assert got['2'] == {'nodes': ['/x']}    # its eval ran in the sandbox: what it wrote is gone
     assert os.listdir(str(marker.parent)) == []      # nothing it ran wrote here
+
+
+def test_the_plan_reads_an_archive_on_the_teachers_side(tmp_path, monkeypatch):
+    """A zipped submission's README is read before any run; grading.yaml's
+    settings hold where the command line gives none; a mistake in one
+    submission's settings is carried in its spec, not patched onto a run."""
+    import argparse
+    import zipfile
+    from exp_assignment2.grading import planning
+    monkeypatch.setattr(launch_nodes, 'provided_packages', lambda: {'gazebo_ros'})
+    monkeypatch.setattr(launch_nodes, 'read', lambda request, **kw: {
+        r['key']: {'nodes': ['/gazebo']} for r in request['launches']})
+    root = package(tmp_path, '`roslaunch my_pkg a.launch` or `roslaunch my_pkg b.launch`\n')
+    folder = tmp_path / 'class'
+    folder.mkdir()
+    with zipfile.ZipFile(str(folder / 'ann.zip'), 'w') as archive:
+        for name in os.listdir(root):
+            archive.write(os.path.join(root, name), 'my_pkg/' + name)
+    (folder / 'grading.yaml').write_text('duration: 50\nsubmissions:\n  ann:\n    skipp: true\n')
+    args = argparse.Namespace(submissions=str(folder), profile=None, duration=None,
+                              real_time_factor=3.0, only=None, repeat=1, seed=1)
+    specs, profile, where = planning.plan(args, str(tmp_path / 'out'), '0.1', print)
+    (spec,) = specs
+    assert (spec.kind, spec.package, spec.commands) == ('zip', 'my_pkg',
+                                                       ['roslaunch my_pkg a.launch'])
+    assert (spec.duration, spec.real_time_factor, profile['name']) == (50.0, 3.0, 'dog')
+    assert where == {'profile': 'the default', 'duration': 'grading.yaml',
+                     'real_time_factor': 'the command line', 'delay': 'the profile'}
+    assert "unknown key 'skipp'" in spec.refused
+    (folder / 'grading.yaml').write_text('with: [../course_pkg]\n')
+    with pytest.raises(planning.TeacherFileError, match='with: is not supported'):
+        planning.plan(args, str(tmp_path / 'out'), '0.1', print)
