@@ -55,7 +55,7 @@ def _files_named(package_dir, name):
     return found
 
 
-def _own_has(ctx, words):
+def own_has(ctx, words):
     """Does the submission's package have this command's launch file or node?"""
     if words[0] == 'roslaunch':
         return bool(_files_named(ctx.package_dir, words[2]))
@@ -139,7 +139,7 @@ def choose(entries, ctx, read_launches):
             item['why'] = "a simulator the profile's world replaces: left out"
             continue
         if len(words) > 2 and words[1] != ctx.package and words[1] not in ctx.provided \
-                and _own_has(ctx, words):
+                and own_has(ctx, words):
             words[1] = ctx.package
             item['why'] = ('there is no package %s: runs the submission\'s own (package.xml '
                            'names it %s)' % (shlex.split(entry['command'])[1], ctx.package))

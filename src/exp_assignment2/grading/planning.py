@@ -19,7 +19,7 @@ import shutil
 import tempfile
 
 from exp_assignment2.grading import launch_nodes, profiles
-from exp_assignment2.grading.choose import Context, choose
+from exp_assignment2.grading.choose import Context, choose, own_has
 from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, \
     readme_entries
 from exp_assignment2.grading.spec import RunSpec, settings
@@ -54,7 +54,8 @@ def resolve(package_dir, package, name, teacher, profile, provided, read_launche
         packages = {package: package_dir, sim_name(package): launch_nodes.REPO}
         for entry in entries:       # $(find NAME) for the name the README gives it too
             words = entry['command'].split()
-            if entry['kind'] == 'ros' and len(words) > 2 and words[1] not in provided:
+            if entry['kind'] == 'ros' and len(words) > 2 and words[1] not in provided \
+                    and own_has(ctx, words):
                 packages.setdefault(words[1], package_dir)
         commands, listed = choose(entries, ctx, lambda requests: read_launches(
             requests, packages))
