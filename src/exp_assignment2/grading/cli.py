@@ -129,7 +129,8 @@ def main(argv=None):
     out = os.path.abspath(args.out or 'grading-report')
     log = lambda text: print('[grade] ' + text, file=sys.stderr, flush=True)  # noqa: E731
     try:
-        profile = profiles.load(args.profile or 'dog')
+        # the profile by the one precedence: --profile, grading.yaml's, dog
+        profile = planning.read_settings(args)[1]['profile']
         if args.report_only:
             summaries = report.write(out, profile)
             log(summary_line(summaries, out))

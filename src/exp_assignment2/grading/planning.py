@@ -108,6 +108,16 @@ def check_with(teacher):
             'grade by hand with: bash tools/run original-env --package DIR --with DIR')
 
 
+def read_settings(args):
+    """(grading.yaml's settings, the settings chosen, where each came from)
+    for the command line's ``args`` (see spec.settings)."""
+    folder = os.path.abspath(args.submissions)
+    teacher = read_teacher_file(os.path.join(folder, 'grading.yaml')
+                                if os.path.isdir(folder) else None)
+    chosen, whence = settings(vars(args), teacher, profiles.load)
+    return teacher, chosen, whence
+
+
 def plan(args, out, version, log):
     """([RunSpec] for every submission and repeat in the folder's order, the
     profile, {setting: where its value came from})."""
@@ -115,10 +125,8 @@ def plan(args, out, version, log):
     for note in notes:
         log(note)
     folder = os.path.abspath(args.submissions)
-    teacher = read_teacher_file(os.path.join(folder, 'grading.yaml')
-                                if os.path.isdir(folder) else None)
+    teacher, chosen, whence = read_settings(args)
     check_with(teacher)
-    chosen, whence = settings(vars(args), teacher, profiles.load)
     profile = chosen['profile']
     if args.only:
         unknown = set(args.only) - {s.name for s in submissions}
