@@ -59,3 +59,25 @@ def test_repeats_give_the_majority_and_the_median_and_say_flaky(tmp_path):
 
 def test_a_tie_goes_to_the_worse_verdict():
     assert report._majority(['passed', 'crashed']) == 'crashed'
+
+
+def test_the_page_lists_every_readme_command_ran_or_left_out(tmp_path):
+    runs = str(tmp_path / 'runs')
+    write_run(runs, 'ann', 'ann', 'passed', 1.0)
+    path = os.path.join(runs, 'ann', 'record', 'run.json')
+    with open(path) as f:
+        run = json.load(f)
+    run['readme_commands'] = [
+        {'command': 'roslaunch p a.launch', 'ran': True, 'why': ''},
+        {'command': 'roslaunch p b.launch', 'ran': False,
+         'why': 'left out: also starts /gazebo, an alternative to `roslaunch p a.launch`'},
+        {'command': 'rosrun p x.py', 'ran': True, 'why': '', 'from': 'run.sh'}]
+    with open(path, 'w') as f:
+        json.dump(run, f)
+    report.write(str(tmp_path), DOG)
+    page = (tmp_path / 'pages' / 'ann.html').read_text()
+    assert ('<code>roslaunch p b.launch</code></td><td>left out</td><td>left out: also starts '
+            '/gazebo, an alternative to `roslaunch p a.launch`</td>') in page
+    assert '<code>rosrun p x.py</code> (in run.sh)</td><td>ran</td>' in page
+    with open(str(tmp_path / 'report.json')) as f:
+        assert json.load(f)['runs'][0]['readme_commands'] == run['readme_commands']
