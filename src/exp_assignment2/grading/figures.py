@@ -89,6 +89,14 @@ def thumbnail(source, path, width=160):
     return path
 
 
+def frame_time(path):
+    """The simulated s of a frame file (``<camera>_<t>.jpg``), or None."""
+    try:
+        return float(os.path.basename(path).rsplit('_', 1)[1][:-4])
+    except (IndexError, ValueError):
+        return None
+
+
 def chosen_frames(record_dir, trace, profile):
     """{moment: frame file} for the first sight of the ball, the closest
     approach and the end, in that order (frames: ``record/frames/<camera>_<t>.jpg``)."""
@@ -97,10 +105,9 @@ def chosen_frames(record_dir, trace, profile):
         return {}
     frames = []
     for name in sorted(os.listdir(directory)):
-        try:
-            frames.append((float(name.rsplit('_', 1)[1][:-4]), os.path.join(directory, name)))
-        except (IndexError, ValueError):
-            continue
+        t = frame_time(name)
+        if t is not None:
+            frames.append((t, os.path.join(directory, name)))
     if not frames:
         return {}
     frames.sort()
