@@ -1,10 +1,11 @@
 """Where a run's CPU went, by process, read from outside its sandbox (no ROS):
-the simulator, ROS's own processes, the student's nodes and the grader's
-driver, from /proc of the processes in the run's control group."""
+the simulator, the run's display (Xvfb and the capture of its windows), ROS's
+own processes, the student's nodes and the grader's driver, from /proc of the processes in the run's control group."""
 import os
 
 CLOCK_TICKS = os.sysconf('SC_CLK_TCK')
 KINDS = (('simulator', ('scripts/simulator.py', '/gzserver')),
+         ('display', ('Xvfb ', 'grading/display.py')),
          ('grader', ('grading/inside.py', 'bwrap ', 'prlimit ')),
          ('ROS', ('rosmaster', 'rosout', 'roslaunch', 'roscore',
                   'spawn_model', 'spawner', 'robot_state_publisher')))

@@ -9,7 +9,7 @@ original-code environment for the package once
 built in its overlay, its messages in ``logs/build.log``), starts a master,
 then each command in that environment, a few seconds apart, each in a
 process group of its own with its output in ``logs/``. It reports what
-happens as JSON lines on its standard output (``built``, ``master``,
+happens as JSON lines on its standard output (``display``, ``built``, ``master``,
 ``started``, ``exited``, ``stopping``, ``ended``) and ends every command,
 gently then not, when the grader writes ``stop`` on its standard input or
 closes it.
@@ -68,6 +68,24 @@ def original_env(plan):
             os.close(saved)
 
 
+def start_display(plan):
+    """The run's own display (:mod:`exp_assignment2.grading.display`), its
+    windows captured in ``display/`` beside the logs, ``DISPLAY`` set for
+    everything started after; its processes, or None when it cannot be made
+    (said in a ``display`` event: the grader's fault, and nothing is run)."""
+    if SRC not in sys.path:
+        sys.path.insert(0, SRC)
+    from exp_assignment2.grading import display
+    try:
+        procs, name = display.start(os.path.join(os.path.dirname(plan['logs']), 'display'))
+    except display.DisplayError as exc:
+        emit('display', error=str(exc))
+        return None
+    os.environ['DISPLAY'] = name
+    emit('display', display=name)
+    return procs
+
+
 def start(plan, env, argv, log_name):
     """``argv`` started in ``env``, in a process group of its own, its output
     in logs/LOG_NAME (where an OSError, such as no such program, is said too)."""
@@ -121,11 +139,15 @@ def main(argv):
         stop.set()
     threading.Thread(target=wait_for_stop, daemon=True).start()
 
+    shown = start_display(plan)     # before the environment: it reads DISPLAY
+    if shown is None:
+        return 0
     # in this thread: the overlay's lock times out with SIGALRM; a build past
     # the grader's limit ends with the sandbox
     env = original_env(plan)
     emit('built', rc=0 if env is not None else 1)
     if env is None:
+        end_all(shown)
         return 0
 
     procs = [start(plan, env, ['roscore', '-p', '11311'], 'roscore.log')]
@@ -162,6 +184,7 @@ def main(argv):
         stop.wait(0.5)
     emit('stopping')
     end_all([proc for _, _, proc in reversed(commands)] + procs)
+    end_all(shown)          # the display last: the student's windows close first
     for i, command, proc in commands:
         if i not in exited:
             emit('exited', index=i, command=command, rc=proc.returncode, at_end=True)

@@ -140,6 +140,7 @@ class Run(object):
             truth = TruthServer(os.path.join(self.sockets, 'truth.sock'), self.record,
                                 may_write=box.may_write)
             self._monitor(box, truth, self._plan(package_dir), rtf, result)
+            self._display_failed(result)
         except SandboxError as exc:
             result.update(verdict='grader_error', reason=str(exc))
         return self._finish(result)
@@ -230,6 +231,14 @@ class Run(object):
         result['wall_time'] = time.monotonic() - t0
         result['sandbox_exit'] = proc.returncode
         result['events'] = events
+
+    @staticmethod
+    def _display_failed(result):
+        """A run whose display could not be made ran nothing: the grader's fault."""
+        for event in result.get('events') or []:
+            if event.get('event') == 'display' and event.get('error'):
+                result.update(verdict='grader_error',
+                              reason='the run\'s display could not be made: %s' % event['error'])
 
     @staticmethod
     def _all_exited(events):

@@ -3,8 +3,8 @@ either: :mod:`exp_assignment2.grading.cluster` hands these to Dask).
 
 The submission travels as an archive (``pack_submission``); the worker runs
 it in a scratch directory of its own (``run_task``) and sends back the run's
-directory as an archive (``pack_run``): its record, its logs and its build
-log, bounded in size (what was cut is said in the result). The teacher's
+directory as an archive (``pack_run``): its record, its logs, its build
+log and its windows' pictures, bounded in size (what was cut is said in the result). The teacher's
 side unpacks it where the report expects it (``unpack_run``). No filesystem
 is shared.
 """
@@ -22,7 +22,7 @@ from exp_assignment2.grading.submissions import MAX_UNPACKED, Submission, copy_d
 
 RETURN_LIMIT = 64 * 1024 * 1024        # bytes of a run's directory sent back
 FILE_LIMIT = 8 * 1024 * 1024           # bytes of one log sent back (its start and end)
-KEPT = ('record', 'work/logs', 'work/ros_home/log', 'work/overlay')
+KEPT = ('record', 'work/logs', 'work/ros_home/log', 'work/overlay', 'work/display')
 VERSION_ENV = 'EXP2_GRADER_VERSION'    # the version a worker announces (default: package.xml's)
 
 

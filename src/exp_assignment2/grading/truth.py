@@ -10,7 +10,9 @@ relay or installed copy, from a file the run cannot write
 counted.
 What arrives is written as it arrives to the run's record, outside every
 directory the sandbox can write: states and topics to ``truth.jsonl``,
-frames to ``frames/`` as JPEG files.
+frames to ``frames/`` as JPEG files, and twice a wall second a pair of
+(simulated s, wall s) to ``clock.jsonl``: what maps the run's other wall
+times (its windows' pictures) to simulated time.
 """
 import base64
 import json
@@ -22,6 +24,7 @@ import time
 from exp_assignment2.grading.peer import peer_process, runs_our_simulator
 
 MAX_LINE = 8 * 1024 * 1024
+CLOCK_EVERY = 0.5       # wall s between two (simulated, wall) pairs in clock.jsonl
 
 
 class TruthServer(object):
@@ -49,6 +52,8 @@ class TruthServer(object):
         self._lock = threading.Lock()          # the reader writes, close() closes
         self._reader = None
         self._out = open(os.path.join(record_dir, 'truth.jsonl'), 'w')
+        self._clock = open(os.path.join(record_dir, 'clock.jsonl'), 'w')
+        self._clock_last = None
         self._thread = threading.Thread(target=self._serve, name='truth', daemon=True)
         self._thread.start()
 
@@ -104,6 +109,7 @@ class TruthServer(object):
         if isinstance(t, (int, float)):
             now = (float(t), time.monotonic())
             self.latest = now
+            self._note_clock(float(t))
             if self.first is None:
                 self.first = now
         if kind == 'frame':
@@ -125,6 +131,15 @@ class TruthServer(object):
             if not self._out.closed:
                 self._out.write(line.decode(errors='replace') + '\n')
 
+    def _note_clock(self, t):
+        wall = time.time()      # the clock the sandbox's processes read too
+        if self._clock_last is not None and wall - self._clock_last < CLOCK_EVERY:
+            return
+        self._clock_last = wall
+        with self._lock:
+            if not self._clock.closed:
+                self._clock.write('[%.3f, %.3f]\n' % (t, wall))
+
     def real_time_factor(self):
         if self.first is None or self.latest is None or self.latest[1] <= self.first[1]:
             return None
@@ -138,6 +153,7 @@ class TruthServer(object):
         self.sock.close()
         with self._lock:
             self._out.close()
+            self._clock.close()
         try:
             os.unlink(self.path)
         except OSError:
