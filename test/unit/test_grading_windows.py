@@ -102,23 +102,30 @@ def test_the_page_shows_each_window_by_its_title_beside_the_camera(tmp_path):
         cv2.imwrite(str(record / 'frames' / ('camera1_%08.2f.jpg' % t)), frame)
     (record / 'clock.jsonl').write_text('[0.0, 1000.0]\n[10.0, 1010.0]\n')
     with open(str(record / 'truth.jsonl'), 'w') as f:
-        for i in range(100):
+        for i in range(100):        # closest to the ball at 2 s
             f.write(json.dumps({'kind': 'state', 't': i / 10, 'joints': {}, 'models': {
-                'robot': [i / 20, 0, 0, 0], 'ball': [4, 0, 0.5, 0]}}) + '\n')
+                'robot': [4 - abs(i - 20) / 20, 0, 0, 0], 'ball': [4, 0, 0.5, 0]}}) + '\n')
     with open(str(record / 'run.json'), 'w') as f:
         json.dump({'name': 'ann', 'label': 'ann', 'verdict': 'passed', 'checks': [],
                    'reason': '', 'commands': [], 'truth': {'sim_time': 10.0}}, f)
     b = windows.CaptureBook(str(runs / 'ann' / 'work' / 'display'), max_windows=1)
-    ok, jpeg = cv2.imencode('.jpg', frame)
-    b.add('my <camera> & "ball"', 1003.0, jpeg.tobytes(), 1, (80, 60))
+    shown = []
+    for wall, grey in ((1003.0, 50), (1008.5, 200)):    # at 3 and 8.5 simulated s
+        ok, jpeg = cv2.imencode('.jpg', numpy.full((60, 80, 3), grey, numpy.uint8))
+        shown.append(b.add('my <camera> & "ball"', wall, jpeg.tobytes(), grey, (80, 60)))
     b.wants('1000 windows', 2)
     b.write()
     report.write(str(tmp_path), DOG)
     page = (tmp_path / 'pages' / 'ann.html').read_text()
-    assert 'window &ldquo;my &lt;camera&gt; &amp; &quot;ball&quot;&rdquo;' in page
+    assert '<th>window &ldquo;my &lt;camera&gt; &amp; &quot;ball&quot;&rdquo;</th>' in page
     assert 'my <camera>' not in page
-    # at the end (9 s): the picture taken at 3 s, the last before it, as a file
-    src = 'img/ann_window0_end.jpg'
-    assert 'src="%s"' % src in page
-    assert (tmp_path / 'pages' / src).is_file()
+    # at each moment, the picture shown last before it, as a file beside the page:
+    # at the closest approach (2 s), the one of 3 s (taken within a second of it);
+    # at the end (9 s), the one of 8.5 s
+    for moment, picture in (('closest_approach', shown[0]), ('end', shown[1])):
+        src = 'img/ann_window0_%s.jpg' % moment
+        assert 'src="%s"' % src in page
+        with open(str(tmp_path / 'pages' / src), 'rb') as copy, \
+                open(os.path.join(b.directory, picture), 'rb') as original:
+            assert copy.read() == original.read(), moment
     assert '1 more windows opened and were not captured' in page

@@ -26,7 +26,7 @@ table{border-collapse:collapse}th,td{border:1px solid #ccc;padding:4px 8px;font-
 vertical-align:top}th{background:#eee;cursor:pointer}.v{color:#fff;padding:2px 6px;
 border-radius:3px;white-space:nowrap}pre{background:#f6f6f6;padding:8px;overflow-x:auto;
 font-size:12px;max-height:30em}.fail{color:#c62828}.ok{color:#2e7d32}img{border:1px solid #ddd}
-.frames img{margin-right:6px}.frames img.window{max-width:480px}.flaky{background:#fff3cd;padding:1px 4px}'''
+.frames img{margin-right:6px}.frames img.window{max-width:760px}.flaky{background:#fff3cd;padding:1px 4px}'''
 SORT_JS = '''function sortBy(th){var t=th.closest('table'),i=[].indexOf.call(th.parentNode.children,th),
 b=t.tBodies[0],rows=[].slice.call(b.rows),asc=th.dataset.asc!=='1';th.dataset.asc=asc?'1':'0';
 rows.sort(function(x,y){var a=x.cells[i].dataset.key||x.cells[i].textContent,
@@ -122,13 +122,13 @@ def _run_pictures(run, runs_dir, img_dir, profile):
                                           if c.get('joint')), 'head'))
     if head:
         pictures['head'] = head
-    frames = {}
+    frames, times = {}, {}
     for moment, source in figures.chosen_frames(record, trace, profile).items():
         target = os.path.join(img_dir, '%s_%s.jpg' % (label, moment.replace(' ', '_')))
         shutil.copy(source, target)
-        frames[moment] = target
+        frames[moment], times[moment] = target, figures.frame_time(source)
     pictures['frames'] = frames
-    pictures['windows'] = _window_pictures(label, runs_dir, img_dir, record, frames)
+    pictures['windows'] = _window_pictures(label, runs_dir, img_dir, record, times)
     thumb_source = frames.get('closest approach') or frames.get('end') or top
     if thumb_source:
         thumb = figures.thumbnail(thumb_source, os.path.join(img_dir, label + '_thumb.jpg'))
@@ -137,15 +137,16 @@ def _run_pictures(run, runs_dir, img_dir, profile):
     return pictures
 
 
-def _window_pictures(label, runs_dir, img_dir, record, frames):
-    """What the run's own windows showed at the frames' moments (the last
-    picture without them), copied next to the page: {'moments', 'rows':
-    [(title, {moment: picture or None})], 'notes'}; None without a window."""
+def _window_pictures(label, runs_dir, img_dir, record, times):
+    """What the run's own windows showed at the camera's moments (``times``:
+    {moment: simulated s}; the last picture without them), copied next to the
+    page: {'moments', 'rows': [(title, {moment: picture or None})], 'notes'};
+    None without a window."""
     shown = windows.read_windows(os.path.join(runs_dir, label, 'work', 'display'))
     if not shown or not (shown['windows'] or shown['left_out_count'] or shown['notes']):
         return None
     clock = windows.read_clock(record)
-    moments = {m: figures.frame_time(p) for m, p in frames.items()} if clock else {}
+    moments = dict(times) if clock else {}
     moments = moments or {'last picture': None}
     rows = []
     for i, (window, chosen) in enumerate(windows.shown_at(shown['windows'], clock, moments)):
@@ -162,22 +163,25 @@ def _window_pictures(label, runs_dir, img_dir, record, frames):
 
 def _camera_section(pictures, rel):
     """The robot's camera at the chosen moments and, beside it, what each of
-    the student's windows showed then, named by its title."""
+    the student's windows showed then, named by its title: a row a moment."""
     frames, shown = pictures.get('frames') or {}, pictures.get('windows')
     moments = list(frames) or (shown['moments'] if shown else [])
     if not moments:
         return []
-    parts = ['<h2>Camera and windows</h2><table class="frames"><tr><th></th>%s</tr>' % ''.join(
-        '<th>%s</th>' % _e(m) for m in moments)]
-    if frames:
-        parts.append('<tr><td>the robot\'s camera</td>%s</tr>' % ''.join(
-            '<td><img src="%s" alt="camera at %s"></td>' % (rel(frames[m]), _e(m))
-            if m in frames else '<td></td>' for m in moments))
-    for title, chosen in (shown or {}).get('rows', []):
-        parts.append('<tr><td>window &ldquo;%s&rdquo;</td>%s</tr>' % (_e(title), ''.join(
-            '<td><a href="%s"><img class="window" src="%s" alt="%s at %s"></a></td>' % (
-                rel(chosen[m]), rel(chosen[m]), _e(title), _e(m)) if chosen.get(m)
-            else '<td>not open yet</td>' for m in moments)))
+    rows = (shown or {}).get('rows', [])
+    parts = ['<h2>Camera and windows</h2><table class="frames"><tr><th></th>%s%s</tr>' % (
+        '<th>the robot\'s camera</th>' if frames else '',
+        ''.join('<th>window &ldquo;%s&rdquo;</th>' % _e(title) for title, _ in rows))]
+    for m in moments:
+        parts.append('<tr><th>%s</th>' % _e(m))
+        if frames:
+            parts.append('<td><img src="%s" alt="camera at %s"></td>' % (rel(frames[m]), _e(m))
+                         if m in frames else '<td></td>')
+        for title, chosen in rows:
+            parts.append('<td><a href="%s"><img class="window" src="%s" alt="%s at %s"></a></td>'
+                         % (rel(chosen[m]), rel(chosen[m]), _e(title), _e(m)) if chosen.get(m)
+                         else '<td>not open yet</td>')
+        parts.append('</tr>')
     parts.append('</table>')
     parts += ['<p>windows: %s</p>' % _e(note) for note in (shown or {}).get('notes', [])]
     return parts
