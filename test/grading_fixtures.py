@@ -20,7 +20,8 @@ DOG = os.path.join('scripts', 'dog.py')
 EXPECTED = {'works': 'passed', 'tabs': 'passed', 'cpp_broken': 'not_built',
             'raises': 'crashed', 'idle': 'failed_checks', 'hostile': None,
             'zipped': 'passed', 'tarred': 'passed', 'old_names': 'passed',
-            'own_world': 'passed', 'alternatives': 'passed', 'other_name': 'passed'}
+            'own_world': 'passed', 'alternatives': 'passed', 'other_name': 'passed',
+            'imshow': 'passed'}
 
 RAISES = '''#!/usr/bin/env python3
 import rospy
@@ -132,6 +133,33 @@ def _alternatives(dest):
         with open(os.path.join(launch, name), 'w') as f:
             f.write(text)
     _replace(dest, 'README.md', ALTERNATIVES)
+
+
+# as the assignment's template does: every frame shown, in the subscriber's
+# thread, with the circle found on the ball drawn on it
+IMSHOW_TITLE = "dog's camera"
+IMSHOW_FIND = """            self.ball = (x / image.shape[1] - 0.5, radius / image.shape[1])
+"""
+IMSHOW_DRAW = """            self.ball = (x / image.shape[1] - 0.5, radius / image.shape[1])
+            cv2.circle(image, (int(x), int(y)), int(radius), (0, 255, 255), 2)
+"""
+IMSHOW_SHOW = """        else:
+            self.ball = None
+        cv2.imshow("%s", image)
+        cv2.waitKey(1)
+""" % IMSHOW_TITLE
+
+
+def _imshow(dest):
+    path = os.path.join(dest, DOG)
+    with open(path) as f:
+        text = f.read()
+    shown = text.replace('(x, _), radius', '(x, y), radius').replace(
+        IMSHOW_FIND, IMSHOW_DRAW).replace("""        else:
+            self.ball = None
+""", IMSHOW_SHOW)
+    assert shown.count('cv2.') == text.count('cv2.') + 3
+    _replace(dest, DOG, shown)
 
 
 def _package(dest):
@@ -294,6 +322,8 @@ def make_folder(dest, names=None):
             _alternatives(package)
         elif name == 'other_name':
             _replace(package, 'README.md', OTHER_NAME)
+        elif name == 'imshow':
+            _imshow(package)
     shutil.rmtree(scratch, ignore_errors=True)
     return dest
 

@@ -5,14 +5,17 @@
 on the fixture folder (test/grading_fixtures.py: a dog that works, one with
 Python 2's tabs, a C++ node that does not compile, a node that raises at
 start, one that never moves, a hostile one, the dog as a .zip and as a
-.tar.gz, a README offering alternatives and one naming another package). Each ends with its expected verdict; the folder and everything
+.tar.gz, a README offering alternatives and one naming another package, a
+node that shows every camera frame in a window). Each ends with its expected verdict; the folder and everything
 outside the runs' directories are unchanged; the hostile run costs only its
 own verdict (the dog graded alone gets the verdict it gets beside it); every
 process of every run is gone; the report's pages open in headless Chromium
 with no missing image.
 """
+import html
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -89,6 +92,37 @@ def test_a_report_says_where_commands_came_from_and_how_to_repeat(graded):
     assert checks['reaches the ball']['passed'] and checks['reaches the ball']['value'] >= 1
     assert checks['head turns at the ball']['value'] >= 0.6
     assert graded['runs']['works']['truth']['frames'] > 0
+
+
+def test_a_node_that_shows_its_camera_passes_and_its_window_is_on_its_page(graded):
+    """cv2.imshow and waitKey in every image callback, as the assignment's
+    template has it: the run's own display takes the window, and the page
+    shows it, by its title, at each of the camera's moments."""
+    run = graded['runs']['imshow']
+    assert run['verdict'] == 'passed', run['reason']
+    assert [e['display'] for e in run['events'] if e.get('event') == 'display']
+    assert run['cpu_s'].get('display', 0) > 0
+    import cv2
+    import numpy
+    pages = os.path.join(graded['out'], 'pages')
+    with open(os.path.join(pages, 'imshow.html')) as f:
+        page = f.read()
+    title = html.escape(grading_fixtures.IMSHOW_TITLE)
+    assert '<th>window &ldquo;%s&rdquo;</th>' % title in page
+    circles = 0
+    for moment in ('first sight of the ball', 'closest approach', 'end'):
+        found = re.search(r'<img class="window" src="([^"]+)" alt="%s at %s">'
+                          % (re.escape(title), moment), page)
+        assert found, (moment, page[page.find('Camera and windows'):][:2000])
+        picture = cv2.imread(os.path.join(pages, found.group(1)))
+        assert picture is not None and picture.shape[0] > 100, moment
+        # the yellow circle the node draws on the ball
+        circles += int(numpy.count_nonzero((picture[:, :, 0] < 90) & (picture[:, :, 1] > 190) &
+                                           (picture[:, :, 2] > 190)) > 20)
+    assert circles >= 1
+    # a node without a window has no window on its page
+    with open(os.path.join(pages, 'works.html')) as f:
+        assert '<th>window &ldquo;' not in f.read()
 
 
 def test_a_readme_is_read_as_a_person_reads_it(graded):
