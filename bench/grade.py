@@ -4,17 +4,18 @@
 
 By default it grades a class: ``--count`` copies of a submission shaped like
 the real ones (test/grading_fixtures.py's ``make_course_shaped``: the course
-robot's 800 x 800 camera at 30 Hz, a node that decodes, blurs and searches
-every frame and ``cv2.imshow``s it with the circle drawn, a SMACH state
-machine), each run with its display. ``--fixtures`` grades the grader's
+robot's 800 x 800 camera at 30 Hz, Gazebo's window, a node that decodes,
+blurs and searches every frame and ``cv2.imshow``s it with the circle drawn,
+a SMACH state machine), each run with its display. ``--fixtures`` grades the grader's
 fixture folder instead, topped up with copies of the dog that works.
 
 For each ``--jobs`` value (default: none given, the grader's own default) it
 prints the wall time, submissions per hour, every run's achieved real-time
 factor and whether the verdicts are the same as at the first value; then,
 over the runs of the first value, the CPU a run keeps busy by process kind
-(simulator, display, student, ROS, grader), in cores at real time (CPU s
-per simulated s, from the processes alive at the run's end), and the default ``--jobs`` that figure leads to on this machine (the profile's
+(simulator, display, viewer: gzclient and rviz, student, ROS, grader), in
+cores at real time (CPU s per simulated s, of the processes alive at the
+run's end), and the default ``--jobs`` that figure leads to on this machine (the profile's
 ``cpu_per_run``). The goal on a 2-core machine: ten submissions of 200
 simulated seconds in at most 12 minutes of wall time, every run at a factor
 of at least 0.95.
@@ -41,7 +42,7 @@ sys.path.insert(0, os.path.join(REPO, 'test'))
 import grading_fixtures  # noqa: E402
 
 
-KINDS = ('simulator', 'display', 'student', 'ROS', 'grader')
+KINDS = ('simulator', 'display', 'viewer', 'student', 'ROS', 'grader')
 GOAL = (10, 200.0, 12 * 60.0, 0.95)     # runs, simulated s each, wall s, least factor
 
 

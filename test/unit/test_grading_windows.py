@@ -129,3 +129,14 @@ def test_the_page_shows_each_window_by_its_title_beside_the_camera(tmp_path):
                 open(os.path.join(b.directory, picture), 'rb') as original:
             assert copy.read() == original.read(), moment
     assert '1 more windows opened and were not captured' in page
+
+
+def test_the_display_and_the_viewers_it_makes_draw_have_their_own_share_of_cpu():
+    from exp_assignment2.grading import cpu
+    kinds = {command: cpu.kind(command) for command in (
+        'Xvfb -displayfd 4 -screen 0 1920x1080x24',
+        '/usr/bin/python3 /r/src/exp_assignment2/grading/display.py capture :0 /w/display',
+        '/usr/bin/python3 /ws/src/gazebo_ros/scripts/gzclient __name:=gazebo_gui',
+        'rviz -d /r/gazebo_ros/rviz/gzclient.rviz __name:=gazebo_gui_rviz',
+        '/usr/bin/python3 /w/overlay/devel/lib/my_dog/dog.py')}
+    assert list(kinds.values()) == ['display', 'display', 'viewer', 'viewer', 'student']

@@ -1,11 +1,16 @@
 """Where a run's CPU went, by process, read from outside its sandbox (no ROS):
-the simulator, the run's display (Xvfb and the capture of its windows), ROS's
-own processes, the student's nodes and the grader's driver, from /proc of the processes in the run's control group."""
+the simulator, the run's display (Xvfb and the capture of its windows), the
+viewers a display makes draw (gzclient, rviz), ROS's own processes, the
+student's nodes and the grader's driver, from /proc of the processes in the
+run's control group."""
 import os
 
 CLOCK_TICKS = os.sysconf('SC_CLK_TCK')
 KINDS = (('simulator', ('scripts/simulator.py', '/gzserver')),
          ('display', ('Xvfb ', 'grading/display.py')),
+         # windows that only show (Gazebo's client, rviz as its viewer, image viewers):
+         # with a display they draw, and cost
+         ('viewer', ('gzclient', 'rviz', 'rqt_image_view', 'image_view')),
          ('grader', ('grading/inside.py', 'bwrap ', 'prlimit ')),
          ('ROS', ('rosmaster', 'rosout', 'roslaunch', 'roscore',
                   'spawn_model', 'spawner', 'robot_state_publisher')))
