@@ -46,6 +46,7 @@ def start(directory, timeout=START_WAIT):
             stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
     except OSError as exc:
         os.close(read_fd)
+        log.close()
         raise DisplayError('Xvfb could not start: %s' % (exc.strerror or exc))
     finally:
         os.close(write_fd)
