@@ -14,7 +14,8 @@ import os
 import shutil
 import statistics
 
-from exp_assignment2.grading import figures, metrics, windows
+from exp_assignment2.grading import figures, metrics
+from exp_assignment2.grading.report_camera import camera_section, window_pictures
 from exp_assignment2.grading.truth import read_record
 from exp_assignment2.grading.verdicts import VERDICTS, read_log
 
@@ -128,63 +129,13 @@ def _run_pictures(run, runs_dir, img_dir, profile):
         shutil.copy(source, target)
         frames[moment], times[moment] = target, figures.frame_time(source)
     pictures['frames'] = frames
-    pictures['windows'] = _window_pictures(label, runs_dir, img_dir, record, times)
+    pictures['windows'] = window_pictures(label, runs_dir, img_dir, record, times)
     thumb_source = frames.get('closest approach') or frames.get('end') or top
     if thumb_source:
         thumb = figures.thumbnail(thumb_source, os.path.join(img_dir, label + '_thumb.jpg'))
         if thumb:
             pictures['thumb'] = thumb
     return pictures
-
-
-def _window_pictures(label, runs_dir, img_dir, record, times):
-    """What the run's own windows showed at the camera's moments (``times``:
-    {moment: simulated s}; the last picture without them), copied next to the
-    page: {'moments', 'rows': [(title, {moment: picture or None})], 'notes'};
-    None without a window."""
-    shown = windows.read_windows(os.path.join(runs_dir, label, 'work', 'display'))
-    if not shown or not (shown['windows'] or shown['left_out_count'] or shown['notes']):
-        return None
-    clock = windows.read_clock(record)
-    moments = dict(times) if clock else {}
-    moments = moments or {'last picture': None}
-    rows = []
-    for i, (window, chosen) in enumerate(windows.shown_at(shown['windows'], clock, moments)):
-        copied = {}
-        for moment, source in chosen.items():
-            copied[moment] = None
-            if source:
-                copied[moment] = os.path.join(img_dir, '%s_window%d_%s.jpg' % (
-                    label, i, moment.replace(' ', '_')))
-                shutil.copy(source, copied[moment])
-        rows.append((window['title'], copied))
-    return {'moments': list(moments), 'rows': rows, 'notes': windows.limit_notes(shown)}
-
-
-def _camera_section(pictures, rel):
-    """The robot's camera at the chosen moments and, beside it, what each of
-    the student's windows showed then, named by its title: a row a moment."""
-    frames, shown = pictures.get('frames') or {}, pictures.get('windows')
-    moments = list(frames) or (shown['moments'] if shown else [])
-    if not moments:
-        return []
-    rows = (shown or {}).get('rows', [])
-    parts = ['<h2>Camera and windows</h2><table class="frames"><tr><th></th>%s%s</tr>' % (
-        '<th>the robot\'s camera</th>' if frames else '',
-        ''.join('<th>window &ldquo;%s&rdquo;</th>' % _e(title) for title, _ in rows))]
-    for m in moments:
-        parts.append('<tr><th>%s</th>' % _e(m))
-        if frames:
-            parts.append('<td><img src="%s" alt="camera at %s"></td>' % (rel(frames[m]), _e(m))
-                         if m in frames else '<td></td>')
-        for title, chosen in rows:
-            parts.append('<td><a href="%s"><img class="window" src="%s" alt="%s at %s"></a></td>'
-                         % (rel(chosen[m]), rel(chosen[m]), _e(title), _e(m)) if chosen.get(m)
-                         else '<td>not open yet</td>')
-        parts.append('</tr>')
-    parts.append('</table>')
-    parts += ['<p>windows: %s</p>' % _e(note) for note in (shown or {}).get('notes', [])]
-    return parts
 
 
 def _page(summary, runs, runs_dir, pictures, profile):
@@ -228,7 +179,7 @@ def _page(summary, runs, runs_dir, pictures, profile):
             if pictures.get(key):
                 parts.append('<img src="%s" alt="%s">' % (rel(pictures[key]), key))
         parts.append('</p>')
-    parts += _camera_section(pictures, rel)
+    parts += camera_section(pictures, rel)
     parts.append('<h2>Runs</h2><table><tr><th>run</th><th>seed</th><th>verdict</th>'
                  '<th>simulated s</th><th>real-time factor</th><th>wall s</th>'
                  '<th>peak memory MB</th><th>where</th><th>to repeat it by hand</th></tr>')
