@@ -133,7 +133,7 @@ def main(argv):
     count = len(os.listdir(folder))
     print('grading %d submissions (%s) of %g simulated s at real_time_factor %g, %d cores' % (
         count, 'the fixture folder' if args.fixtures else
-        'course-shaped: 800 x 800 camera at 30 Hz, imshow of every frame, SMACH',
+        'course-shaped: 800 x 800 camera at 30 Hz, Gazebo\'s window, imshow of every frame, SMACH',
         args.duration, args.real_time_factor, os.cpu_count()))
     if args.dask:
         return dask_rows(args, folder, scratch, count)

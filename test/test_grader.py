@@ -6,8 +6,8 @@ on the fixture folder (test/grading_fixtures.py: a dog that works, one with
 Python 2's tabs, a C++ node that does not compile, a node that raises at
 start, one that never moves, a hostile one, the dog as a .zip and as a
 .tar.gz, a README offering alternatives and one naming another package, a
-node that shows every camera frame in a window). Each ends with its expected verdict; the folder and everything
-outside the runs' directories are unchanged; the hostile run costs only its
+node that shows every camera frame in a window). Each ends with its expected
+verdict; the folder and everything outside the runs' directories are unchanged; the hostile run costs only its
 own verdict (the dog graded alone gets the verdict it gets beside it); every
 process of every run is gone; the report's pages open in headless Chromium
 with no missing image.

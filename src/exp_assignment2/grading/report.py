@@ -27,7 +27,8 @@ table{border-collapse:collapse}th,td{border:1px solid #ccc;padding:4px 8px;font-
 vertical-align:top}th{background:#eee;cursor:pointer}.v{color:#fff;padding:2px 6px;
 border-radius:3px;white-space:nowrap}pre{background:#f6f6f6;padding:8px;overflow-x:auto;
 font-size:12px;max-height:30em}.fail{color:#c62828}.ok{color:#2e7d32}img{border:1px solid #ddd}
-.frames img{margin-right:6px}.frames img.window{max-width:760px}.flaky{background:#fff3cd;padding:1px 4px}'''
+.frames img{margin-right:6px}.frames img.window{max-width:760px}
+.flaky{background:#fff3cd;padding:1px 4px}'''
 SORT_JS = '''function sortBy(th){var t=th.closest('table'),i=[].indexOf.call(th.parentNode.children,th),
 b=t.tBodies[0],rows=[].slice.call(b.rows),asc=th.dataset.asc!=='1';th.dataset.asc=asc?'1':'0';
 rows.sort(function(x,y){var a=x.cells[i].dataset.key||x.cells[i].textContent,
