@@ -138,8 +138,10 @@ def test_the_display_and_the_viewers_it_makes_draw_have_their_own_share_of_cpu()
         '/usr/bin/python3 /r/src/exp_assignment2/grading/display.py capture :0 /w/display',
         '/usr/bin/python3 /ws/src/gazebo_ros/scripts/gzclient __name:=gazebo_gui',
         'rviz -d /r/gazebo_ros/rviz/gzclient.rviz __name:=gazebo_gui_rviz',
-        '/usr/bin/python3 /w/overlay/devel/lib/my_dog/dog.py')}
-    assert list(kinds.values()) == ['display', 'display', 'viewer', 'viewer', 'student']
+        '/usr/bin/python3 /w/overlay/devel/lib/my_dog/dog.py',
+        '/usr/bin/python3 /ws/devel/lib/exp_assignment2/simulator.py __name:=simulator')}
+    assert list(kinds.values()) == ['display', 'display', 'viewer', 'viewer', 'student',
+                                    'simulator']
 
 
 def test_no_display_is_the_graders_fault(tmp_path, monkeypatch):
