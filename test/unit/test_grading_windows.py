@@ -23,6 +23,9 @@ def test_a_window_is_kept_when_it_changed_and_a_new_title_only_within_the_limit(
     b.add('mask', 10.0, b'jpeg', 7, (800, 800))
     assert not b.wants('third', 3) and not b.wants('third', 4) and not b.wants('fourth', 5)
     assert (b.left_out, b.left_out_count) == (['third', 'fourth'], 2)
+    for tick in range(3):       # a thousand windows, seen again every period
+        assert not any([b.admits('w%d' % i) for i in range(1000)])
+    assert b.left_out_count == 1002 and len(b.left_out) == windows.LEFT_OUT_NAMED
     assert [w['title'] for w in b.windows] == ['camera', 'mask']
 
 

@@ -110,7 +110,7 @@ def capture(name, directory):
     from Xlib import X, error
     from Xlib import display as xdisplay
     from Xlib.ext import composite
-    from exp_assignment2.grading.windows import MAX_READ, CaptureBook
+    from exp_assignment2.grading.windows import MAX_LOOK, MAX_READ, CaptureBook
     book = CaptureBook(directory)
     display = xdisplay.Display(name)
     root = display.screen().root
@@ -120,23 +120,28 @@ def capture(name, directory):
         book.notes.append('no Composite extension: a window covered by another shows it')
     book.write()
     net_wm_name, utf8 = display.intern_atom('_NET_WM_NAME'), display.intern_atom('UTF8_STRING')
-    running = [True]
+    running, looked_past = [True], False
     signal.signal(signal.SIGTERM, lambda *_: running.__setitem__(0, False))
     signal.signal(signal.SIGINT, lambda *_: running.__setitem__(0, False))
     while running[0]:
-        now, changed, seen = time.time(), False, set()
+        now, seen = time.time(), set()
         try:
             children = root.query_tree().children
         except error.ConnectionClosedError:
             break
-        for window in children:
+        if len(children) > MAX_LOOK and not looked_past:
+            looked_past = True
+            book.notes.append('%d top-level windows at once: only the first %d were looked at'
+                              % (len(children), MAX_LOOK))
+            book.dirty = True
+        for window in children[:MAX_LOOK]:
             try:
                 if window.get_attributes().map_state != X.IsViewable:
                     continue
-                geometry = window.get_geometry()
                 title = _title(window, net_wm_name, utf8)
-                if title in seen:       # two windows of one title: the first
+                if title in seen or not book.admits(title):    # one picture a title
                     continue
+                geometry = window.get_geometry()
                 width, height = min(geometry.width, MAX_READ), min(geometry.height, MAX_READ)
                 image = window.get_image(0, 0, width, height, X.ZPixmap, 0xffffffff)
             except error.ConnectionClosedError:
@@ -155,8 +160,7 @@ def capture(name, directory):
             if ok:
                 book.add(title, now, jpeg.tobytes(), digest, (geometry.width, geometry.height),
                          scaled=scaled, cut=(width, height) != (geometry.width, geometry.height))
-                changed = True
-        if changed:
+        if book.dirty:
             book.write()
         deadline = now + book.period
         while running[0] and time.time() < deadline:

@@ -25,7 +25,9 @@ MAX_BYTES = 24 * 2 ** 20   # bytes of pictures kept in a run
 MAX_SIDE = 1600            # px: a larger window's picture is scaled down to fit
 MAX_READ = 2048            # px: of a larger window, its top-left part is read
 MAX_TITLE = 200            # characters of a title kept
+MAX_LOOK = 256             # top-level windows looked at, each period
 LEFT_OUT_NAMED = 20        # titles of left-out windows named on the page
+MAX_LEFT_OUT_SEEN = 10000  # titles of left-out windows told apart (counted once each)
 PICTURE = re.compile(r'^w\d{1,3}_\d{1,7}\.jpg$')
 UNTITLED = '(untitled)'
 
@@ -46,7 +48,8 @@ class CaptureBook(object):
         self.max_windows, self.max_pictures, self.max_bytes = max_windows, max_pictures, max_bytes
         self.windows = []             # [{'title', 'pictures': [{file, wall, bytes}], ...}]
         self._digests = {}            # title -> digest of its last picture
-        self.left_out, self.left_out_count = [], 0
+        self.left_out, self.left_out_count, self._left_out_seen = [], 0, set()
+        self.dirty = True             # something to write
         self.thinned, self.count, self.bytes = 0, 0, 0
         self.notes = []               # the capture's own troubles (composite, errors)
         os.makedirs(directory, exist_ok=True)
@@ -57,19 +60,25 @@ class CaptureBook(object):
                 return window
         return None
 
-    def wants(self, title, digest):
-        """Is a picture of this window, whose pixels' digest is ``digest``, to be kept?
-        (A new title past the windows' limit is counted, never kept.)"""
+    def admits(self, title):
+        """May this window be captured? A new title past the windows' limit is
+        counted (and named, up to a point), never captured: asked before its
+        pixels are read, so a thousand windows cost a thousand titles only."""
         title = clean_title(title)
-        if self._window(title) is None:
-            if len(self.windows) >= self.max_windows:
-                if title not in self.left_out:
-                    self.left_out_count += 1
-                    if len(self.left_out) < LEFT_OUT_NAMED:
-                        self.left_out.append(title)
-                return False
+        if self._window(title) is not None or len(self.windows) < self.max_windows:
             return True
-        return self._digests.get(title) != digest
+        if title not in self._left_out_seen and len(self._left_out_seen) < MAX_LEFT_OUT_SEEN:
+            self._left_out_seen.add(title)
+            self.left_out_count += 1
+            self.dirty = True
+            if len(self.left_out) < LEFT_OUT_NAMED:
+                self.left_out.append(title)
+        return False
+
+    def wants(self, title, digest):
+        """Is a picture of this window, whose pixels' digest is ``digest``, to be
+        kept (admitted, and changed since its last one)?"""
+        return self.admits(title) and self._digests.get(clean_title(title)) != digest
 
     def add(self, title, wall, jpeg, digest, size, scaled=False, cut=False):
         """Keep one picture (JPEG bytes) of the window at ``wall``; returns its file."""
@@ -90,6 +99,7 @@ class CaptureBook(object):
         window['cut'] = window['cut'] or bool(cut)
         self._digests[title] = digest
         self.bytes += len(jpeg)
+        self.dirty = True
         self._keep_within_limits()
         return name
 
@@ -133,6 +143,7 @@ class CaptureBook(object):
         with open(path + '.new', 'w') as f:
             json.dump(self.as_dict(), f)
         os.replace(path + '.new', path)
+        self.dirty = False
 
 
 def read_windows(directory):
@@ -246,8 +257,9 @@ def limit_notes(windows):
     for window in windows['windows']:
         size = 'x'.join(str(n) for n in window['size'] or [])
         if window['cut']:
-            notes.append('"%s" (%s px): only its top-left %d px square was read' % (
-                window['title'], size, limits.get('read', MAX_READ)))
+            notes.append('"%s" (%s px): only its top-left %d x %d px part was read%s' % (
+                window['title'], size, limits.get('read', MAX_READ), limits.get('read', MAX_READ),
+                ', scaled down to %d px' % limits.get('side', MAX_SIDE) if window['scaled'] else ''))
         elif window['scaled']:
             notes.append('"%s" (%s px): shown scaled down to %d px' % (
                 window['title'], size, limits.get('side', MAX_SIDE)))
