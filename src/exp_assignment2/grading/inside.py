@@ -26,8 +26,9 @@ import sys
 import threading
 import time
 
-# this repository's src: src/exp_assignment2/grading/inside.py -> three levels up
-SRC = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
+# run as a script: this file's directory is first on sys.path, so paths.py is
+# importable as it is (this repository's src, found once there)
+from paths import SRC  # noqa: E402
 
 MASTER_WAIT = 30.0      # s for the master to answer
 GRACE = 8.0             # s between SIGINT and SIGTERM, and SIGTERM and SIGKILL

@@ -14,6 +14,7 @@ import threading
 import time
 
 from exp_assignment2.grading import cpu, verdicts
+from exp_assignment2.grading.paths import INSIDE, REPO
 from exp_assignment2.grading.commands import Start
 from exp_assignment2.grading.run_files import directory_size, log_sizes, waits_on_wall_clock
 from exp_assignment2.grading.sandbox import Sandbox, SandboxError
@@ -21,10 +22,6 @@ from exp_assignment2.grading.submissions import SubmissionError, package_name, u
 from exp_assignment2.grading.truth import TruthServer
 from exp_assignment2.sim.ground_truth import SOCKET_ENV, TOPICS_ENV
 
-# the repository itself (the workspace links to it)
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
-    os.path.realpath(__file__)))))
-INSIDE = os.path.join(REPO, 'src', 'exp_assignment2', 'grading', 'inside.py')
 OWN_NAME, SIM_PACKAGE = 'exp_assignment2', 'exp_assignment2_sim'   # see overlay/build.py
 BUILD_LIMIT = 900.0          # wall s for a build
 START_SLACK = 120.0          # wall s on top of the duration: set-up, starting, ending

@@ -19,9 +19,9 @@ import struct
 import threading
 import time
 
+from exp_assignment2.grading.paths import SIMULATOR
+
 MAX_LINE = 8 * 1024 * 1024
-SIMULATOR = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
-    os.path.realpath(__file__))))), 'scripts', 'simulator.py')
 
 
 def peer_command(conn):
