@@ -4,16 +4,17 @@
 
 on the fixture folder (test/grading_fixtures.py: a dog that works, one with
 Python 2's tabs, a C++ node that does not compile, a node that raises at
-start, one that never moves, a hostile one, and the dog as a .zip and as a
-.tar.gz). Each ends with its expected verdict; the folder and everything
-outside the runs' directories are unchanged; the hostile run costs only its
-own verdict (the dog graded alone gets the verdict it gets beside it); every
-process of every run is gone; the report's pages open in headless Chromium
-with no missing image.
+start, one that never moves, a hostile one, the dog as a .zip and as a
+.tar.gz, and one whose launch file names a node that is not there). Each
+ends with its expected verdict; the folder and everything outside the runs'
+directories are unchanged; the hostile run costs only its own verdict (the
+dog graded alone gets the verdict it gets beside it); every process of every
+run is gone; the report's pages open in headless Chromium with no missing
+image.
 """
+import collections
 import json
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -71,9 +72,21 @@ def test_each_submission_gets_its_verdict(graded):
     assert graded['by_name']['raises']['reason'] == \
         'dog-5 died (exit code 1): RuntimeError: the dog has no legs'
     assert graded['by_name']['idle']['reason'].startswith('failed: reaches the ball')
-    summary = graded['proc'].stdout.strip().splitlines()[-1]
-    assert re.match(r'\[grade\] graded 8 submissions: 4 passed, 1 failed_checks, \d crashed',
-                    summary) or 'graded 8 submissions' in summary, summary
+    # roslaunch's rule: the node that could not start is noted, on its own command
+    (error,) = graded['by_name']['missing_node']['launch_errors']
+    assert error['command'] == 'roslaunch exp_assignment2 gazebo_world.launch', error
+    assert error['line'].startswith('ERROR: cannot launch node of type '
+                                    '[exp_assignment2/ghost.py]'), error
+    with open(os.path.join(graded['out'], 'pages', 'missing_node.html')) as f:
+        assert 'Nodes that could not start (1)' in f.read()
+    # the terminal's summary line counts the verdicts the report has (the hostile's as it came)
+    summary = [l for l in graded['proc'].stdout.splitlines() if l.startswith('[grade] graded ')]
+    summary = summary[-1] if summary else graded['proc'].stdout[-2000:]
+    counts = collections.Counter(got.values())
+    assert summary.startswith('[grade] graded %d submissions: %s; report: ' % (
+        len(grading_fixtures.EXPECTED), ', '.join('%d %s' % (counts[v], v) for v in (
+            'passed', 'failed_checks', 'crashed', 'timed_out', 'not_started', 'not_built',
+            'grader_error') if counts[v]))), summary
 
 
 def test_a_report_says_where_commands_came_from_and_how_to_repeat(graded):
@@ -124,7 +137,7 @@ def test_the_report_opens_in_a_browser_with_every_image(graded, tmp_path):
     pages = [os.path.join(out, 'index.html')] + [
         os.path.join(out, 'pages', n) for n in sorted(os.listdir(os.path.join(out, 'pages')))
         if n.endswith('.html')]
-    assert len(pages) == 9
+    assert len(pages) == len(grading_fixtures.EXPECTED) + 1
     browser = shutil.which('chromium')
     assert browser, 'chromium is not installed (tools/run test installs it)'
     for page in pages:
@@ -135,9 +148,9 @@ def test_the_report_opens_in_a_browser_with_every_image(graded, tmp_path):
         assert 'data-images-missing="0"' in proc.stdout, (page, proc.stdout[:500])
     with open(pages[0]) as f:
         index = f.read()
-    assert index.count('<tr><td><a href="pages/') == 8
+    assert index.count('<tr><td><a href="pages/') == len(grading_fixtures.EXPECTED)
     with open(os.path.join(out, 'grades.csv')) as f:
-        assert len(f.read().strip().splitlines()) == 9
+        assert len(f.read().strip().splitlines()) == len(grading_fixtures.EXPECTED) + 1
 
 
 def test_the_report_is_made_again_without_running(graded):
@@ -147,7 +160,7 @@ def test_the_report_is_made_again_without_running(graded):
                           universal_newlines=True, timeout=300)
     assert proc.returncode == 0, proc.stdout[-2000:]
     assert os.path.exists(os.path.join(graded['out'], 'index.html'))
-    assert 'graded 8 submissions' in proc.stdout
+    assert 'graded %d submissions' % len(grading_fixtures.EXPECTED) in proc.stdout
 
 
 def test_a_miro_submission_under_the_miro_profile(tmp_path):
