@@ -28,8 +28,8 @@ TAIL = 15                        # lines of a dead node's output shown
 
 DIED = re.compile(r'^\[(?P<node>[^\]]+)\] process has died \[pid \d+, exit code (?P<code>-?\d+), '
                   r'cmd (?P<cmd>.*?)\]\.?$', re.M)
-CANNOT_LAUNCH = re.compile(r'^ERROR: cannot launch node of type \[(?P<type>[^\]]+)\]: ?(?P<why>.*)$',
-                           re.M)
+CANNOT_LAUNCH = re.compile(
+    r'^ERROR: cannot launch node of type \[(?P<type>[^\]]+)\]: ?(?P<why>.*)$', re.M)
 STARTED_NOTHING = re.compile(r'^(RLException: .*|Resource not found: .*|\[rosrun\] .*|'
                              r'\[rospack\] Error: .*|'
                              r'ERROR: .*is neither a launch file.*)$', re.M)

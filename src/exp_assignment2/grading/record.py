@@ -66,5 +66,6 @@ def load_all(runs_dir):
     """[RunRecord] of every run directory of ``runs_dir`` that has one, by label."""
     if not os.path.isdir(runs_dir):
         return []
-    found = (load(os.path.join(runs_dir, label, 'record')) for label in sorted(os.listdir(runs_dir)))
+    found = (load(os.path.join(runs_dir, label, 'record'))
+             for label in sorted(os.listdir(runs_dir)))
     return [r for r in found if r is not None]

@@ -223,7 +223,7 @@ def gather(work, record_dir, result, profile):
         elif event.get('rc') not in (0, None) and not states:
             nothing.append((1, index, command, logs_.last_line(text) or 'exited with code %s'
                             % logs_.exit_name(event['rc'])))
-        elif event.get('rc') not in (0, None) and not command.startswith('roslaunch '):
+        elif event.get('rc') not in (0, None) and not (command or '').startswith('roslaunch '):
             # a rosrun'd node (roslaunch says its nodes' deaths itself)
             seen.died.append(logs_.death(command, event['rc'], command, rel,
                                          logs_.last_lines(text, 80)))
