@@ -115,6 +115,13 @@ def test_tracebacks_in_a_log_and_quiet_endings_left_out():
     assert len(logs.python_errors([('a', text), ('b', text)])) == 1
 
 
+def test_colours_and_the_terminal_title_are_not_read(tmp_path):
+    (tmp_path / 'logs').mkdir()
+    (tmp_path / 'logs' / 'command-0.log').write_bytes(
+        b'\x1b]2;/w/a.launch http://localhost:11311\x07\x1b[31mERROR: red\x1b[0m\n')
+    assert logs.read_log(str(tmp_path), 'logs/command-0.log', {}) == 'ERROR: red\n'
+
+
 def test_exit_codes_named():
     assert [logs.exit_name(c) for c in (1, -6, -11, -9, None)] == [
         '1', '-6 (SIGABRT)', '-11 (SIGSEGV)', '-9 (SIGKILL)', '?']

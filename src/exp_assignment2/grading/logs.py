@@ -23,7 +23,8 @@ import re
 import signal
 
 READ_LIMIT = 4 * 1024 * 1024     # bytes of each log read
-ANSI = re.compile(r'\x1b\[[0-9;]*[A-Za-z]')      # roslaunch's colours
+# roslaunch's colours, and the terminal title it sets (ESC ] 2 ; ... BEL)
+ANSI = re.compile(r'\x1b\[[0-9;]*[A-Za-z]|\x1b\][^\x07\n]*(?:\x07|\x1b\\)')
 TAIL = 15                        # lines of a dead node's output shown
 
 DIED = re.compile(r'^\[(?P<node>[^\]]+)\] process has died \[pid \d+, exit code (?P<code>-?\d+), '
