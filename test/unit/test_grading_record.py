@@ -26,3 +26,32 @@ def test_every_run_read_and_a_broken_one_left_out(tmp_path):
     (runs / 'd').mkdir()
     assert [r['label'] for r in record.load_all(str(runs))] == ['a', 'b']
     assert record.load_all(str(tmp_path / 'none')) == []
+
+
+def test_the_build_error_travels_as_data(tmp_path):
+    """The driver's built event carries the build's first error as file, line and
+    message (BuildFailed's), for the record and the verdict, not parsed out of a log."""
+    import os
+    import sys
+    from exp_assignment2.grading import paths
+    from exp_assignment2.original_env.overlay.build import BuildFailed, build
+    sys.path.insert(0, paths.GRADING)      # as the sandbox runs it: a script beside paths.py
+    try:
+        import inside
+    finally:
+        sys.path.remove(paths.GRADING)
+    assert inside.build_error(BuildFailed('the build of /w failed: /w/src/a.cpp:3: expected '
+                                          "';' (full log: x)", '/w/src/a.cpp:3',
+                                          "expected ';'")) == {
+        'file': '/w/src/a.cpp', 'line': 3, 'message': "expected ';'"}
+    assert inside.build_error(BuildFailed('no workspace')) == {
+        'file': None, 'line': None, 'message': 'no workspace'}
+    package = tmp_path / 'bad'
+    package.mkdir()
+    (package / 'package.xml').write_text('<package><name>x</name></package>')
+    try:
+        build(str(package), workspace=str(tmp_path), root=str(tmp_path / 'overlays'))
+    except BuildFailed as exc:
+        error = inside.build_error(exc)
+    assert error['file'] == os.path.join(str(package), 'package.xml') and error['line'] is None
+    assert error['message'] == 'The manifest must contain exactly one "version" tag'

@@ -261,6 +261,7 @@ class Run(object):
 
     def _finish(self, result):
         result.setdefault('duration', self.settings.duration)
+        result.setdefault('ended_by', 'not_run')      # not unpacked, or no sandbox
         if 'verdict' not in result:
             result.update(verdicts.judge(self.work, self.record, result, self.settings.profile))
         result['finished'] = time.time()
