@@ -20,7 +20,8 @@ DOG = os.path.join('scripts', 'dog.py')
 # name -> expected verdict
 EXPECTED = {'works': 'passed', 'tabs': 'passed', 'cpp_broken': 'not_built',
             'raises': 'crashed', 'idle': 'failed_checks', 'hostile': None,
-            'zipped': 'passed', 'tarred': 'passed', 'missing_node': 'passed'}
+            'zipped': 'passed', 'tarred': 'passed', 'old_names': 'passed',
+            'own_world': 'passed', 'missing_node': 'passed'}
 
 RAISES = '''#!/usr/bin/env python3
 import rospy
@@ -146,19 +147,60 @@ def _missing_node(dest):
         f.write(text.replace('</launch>', MISSING_NODE + '</launch>'))
 
 
+# a Kinetic-era launch file: robot_state_publisher's old node type
+OLD_STATE_PUBLISHER = '''    <node name="robot_state_publisher" pkg="robot_state_publisher"
+          type="state_publisher"/>
+    <node name="controller_spawner"'''
+
+# a package of the student's own name, in this package's world (its
+# simulator.launch, the course robot) rather than a Gazebo world of its own
+OWN_WORLD_PACKAGE = 'dog_on_sim'
+OWN_WORLD_README = """# A dog on the course's simulator
+
+    roslaunch exp_assignment2 simulator.launch robot_model:=original
+    rosrun dog_on_sim dog.py
+"""
+
+
+def _own_world(dest):
+    shutil.rmtree(os.path.join(dest, 'launch'))
+    for name in ('package.xml', 'CMakeLists.txt', DOG):
+        path = os.path.join(dest, name)
+        with open(path) as f:
+            text = f.read()
+        text = text.replace('exp_assignment2', OWN_WORLD_PACKAGE)
+        # the course robot's head controller, as this package's simulator names it
+        text = text.replace('joint_head_controller', 'joint_position_controller')
+        # the world's ball starts 2.2 m ahead: back away first, then play
+        text = text.replace("""        twist = Twist()
+""", """        twist = Twist()
+        self.steps = getattr(self, 'steps', 0) + 1
+        if self.steps <= 50:                # 5 s at the node's 10 Hz
+            twist.linear.x = -0.6
+            self.cmd.publish(twist)
+            return
+""")
+        with open(path, 'w') as f:
+            f.write(text)
+    with open(os.path.join(dest, 'README.md'), 'w') as f:
+        f.write(OWN_WORLD_README)
+
+
 MIRO_ORIGINAL = os.path.join(HERE, 'fixtures', 'miro_original')
 MIRO_README = """# MiRo
 
 Start the state manager first, then the rest:
 
-    rosrun exp_assignment2 miro_state_manager.py
-    roslaunch exp_assignment2 miro_user.launch
+    rosrun {package} miro_state_manager.py
+    roslaunch {package} miro_user.launch
 """
 
 
-def make_miro(dest):
+def make_miro(dest, package='exp_assignment2'):
     """A MiRo submission in the original's shape (test/fixtures/miro_original's
-    four nodes and the user's launch file), for the miro profile."""
+    four nodes and the user's launch file), for the miro profile; its package
+    named ``package`` (a student's own name: the world is then this package's
+    ``exp_assignment2``, as a teacher's workspace has it)."""
     os.makedirs(os.path.join(dest, 'scripts'))
     os.makedirs(os.path.join(dest, 'launch'))
     for name in os.listdir(MIRO_ORIGINAL):
@@ -166,10 +208,19 @@ def make_miro(dest):
         shutil.copy(os.path.join(MIRO_ORIGINAL, name), target)
         if name.endswith('.py'):
             os.chmod(target, 0o755)
-    shutil.copy(os.path.join(BASE, 'package.xml'), os.path.join(dest, 'package.xml'))
-    shutil.copy(os.path.join(BASE, 'CMakeLists.txt'), os.path.join(dest, 'CMakeLists.txt'))
+    for name in ('package.xml', 'CMakeLists.txt'):
+        with open(os.path.join(BASE, name)) as f:
+            text = f.read()
+        with open(os.path.join(dest, name), 'w') as f:
+            f.write(text.replace('exp_assignment2', package))
+    for name in os.listdir(os.path.join(dest, 'launch')):
+        path = os.path.join(dest, 'launch', name)
+        with open(path) as f:
+            text = f.read()
+        with open(path, 'w') as f:
+            f.write(text.replace('exp_assignment2', package))
     with open(os.path.join(dest, 'README.md'), 'w') as f:
-        f.write(MIRO_README)
+        f.write(MIRO_README.format(package=package))
     return dest
 
 
@@ -209,6 +260,14 @@ def make_folder(dest, names=None):
             _replace(package, DOG, HOSTILE)
         elif name == 'missing_node':
             _missing_node(package)
+        elif name == 'old_names':
+            path = os.path.join(package, 'launch', 'gazebo_world.launch')
+            with open(path) as f:
+                text = f.read()
+            with open(path, 'w') as f:
+                f.write(text.replace('    <node name="controller_spawner"', OLD_STATE_PUBLISHER))
+        elif name == 'own_world':
+            _own_world(package)
     shutil.rmtree(scratch, ignore_errors=True)
     return dest
 

@@ -87,6 +87,8 @@ def test_each_submission_gets_its_verdict(graded):
         len(grading_fixtures.EXPECTED), ', '.join('%d %s' % (counts[v], v) for v in (
             'passed', 'failed_checks', 'crashed', 'timed_out', 'not_started', 'not_built',
             'grader_error') if counts[v]))), summary
+    # nothing of the grader's own machinery on the teacher's terminal
+    assert 'Traceback' not in graded['proc'].stdout, graded['proc'].stdout[-3000:]
 
 
 def test_a_report_says_where_commands_came_from_and_how_to_repeat(graded):
@@ -163,22 +165,54 @@ def test_the_report_is_made_again_without_running(graded):
     assert 'graded %d submissions' % len(grading_fixtures.EXPECTED) in proc.stdout
 
 
-def test_a_miro_submission_under_the_miro_profile(tmp_path):
-    """The profile's world (miro_world.launch, as Stage was) first, then the
-    submission's README commands; its arrivals at the commanded targets."""
+def test_students_earlier_ros_and_the_courses_own_world(graded):
+    """A Kinetic-era launch file (robot_state_publisher's state_publisher) runs
+    as it did, with one line; a package of the student's own name in this
+    package's world (its simulator.launch, started through the workspace's
+    devel-space relay) is judged from that simulator's truth."""
+    assert graded['by_name']['old_names']['verdict'] == 'passed'
+    with open(os.path.join(graded['out'], 'runs', 'old_names', 'work', 'logs',
+                           'command-0.log'), errors='replace') as f:
+        said = f.read()
+    assert 'robot_state_publisher/state_publisher: started as ' \
+        'robot_state_publisher/robot_state_publisher' in said
+    own = graded['runs']['own_world']
+    assert own['verdict'] == 'passed', (own['reason'], own.get('checks'))
+    assert own['commands'] == ['roslaunch exp_assignment2 simulator.launch robot_model:=original',
+                               'rosrun dog_on_sim dog.py']
+    assert own['truth']['refused_peers'] == []
+    assert 'simulator.py' in own['truth']['simulator']
+
+
+def test_miro_submissions_under_the_miro_profile(tmp_path):
+    """As a teacher grades after the README's set-up: the profile's world
+    (miro_world.launch, as Stage was) first, then each submission's README
+    commands; judged by its arrivals at the commanded targets. One package is
+    named exp_assignment2 (the world is then exp_assignment2_sim), one has
+    its own name (the world is this package's, its simulator started through
+    the workspace's devel-space relay)."""
     folder = tmp_path / 'miro_class'
     grading_fixtures.make_miro(str(folder / 'miro_student'))
+    grading_fixtures.make_miro(str(folder / 'miro_own_name'), package='assignment1')
     out = str(tmp_path / 'report')
-    proc = subprocess.run(GRADE + [str(folder), '--out', out, '--profile', 'miro',
+    proc = subprocess.run(GRADE + [str(folder), '--out', out, '--profile', 'miro', '--jobs', '2',
                                    '--duration', '60', '--real-time-factor', '2'],
                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                           universal_newlines=True, timeout=900)
     assert proc.returncode == 0, proc.stdout[-3000:]
+    assert 'Traceback' not in proc.stdout, proc.stdout[-3000:]
     with open(os.path.join(out, 'report.json')) as f:
-        run = json.load(f)['runs'][0]
-    assert run['commands'] == ['roslaunch exp_assignment2_sim miro_world.launch',
-                               'rosrun exp_assignment2 miro_state_manager.py',
-                               'roslaunch exp_assignment2 miro_user.launch']
-    assert run['verdict'] == 'passed', (run['reason'], run.get('checks'))
-    arrivals = {c['metric']: c['value'] for c in run['checks']}['arrivals']
-    assert arrivals >= 3
+        runs = {r['label']: r for r in json.load(f)['runs']}
+    assert runs['miro_student']['commands'] == [
+        'roslaunch exp_assignment2_sim miro_world.launch',
+        'rosrun exp_assignment2 miro_state_manager.py',
+        'roslaunch exp_assignment2 miro_user.launch']
+    assert runs['miro_own_name']['commands'] == [
+        'roslaunch exp_assignment2 miro_world.launch',
+        'rosrun assignment1 miro_state_manager.py',
+        'roslaunch assignment1 miro_user.launch']
+    for run in runs.values():
+        assert run['verdict'] == 'passed', (run['label'], run['reason'], run.get('checks'))
+        assert run['truth']['refused_peers'] == [], run['truth']
+        arrivals = {c['metric']: c['value'] for c in run['checks']}['arrivals']
+        assert arrivals >= 3

@@ -135,7 +135,8 @@ def test_no_package_and_two_packages(tmp_path):
 
 
 def test_only_the_repositorys_simulator_may_send_the_ground_truth(tmp_path):
-    from exp_assignment2.grading.truth import SIMULATOR, runs_our_simulator
+    from exp_assignment2.grading.paths import SIMULATOR
+    from exp_assignment2.grading.peer import runs_our_simulator
     assert os.path.exists(SIMULATOR)
     link = tmp_path / 'scripts'
     os.symlink(os.path.dirname(SIMULATOR), str(link))     # the overlay's link farm
@@ -144,3 +145,72 @@ def test_only_the_repositorys_simulator_may_send_the_ground_truth(tmp_path):
     fake.write_text('print("I am the simulator")')
     assert not runs_our_simulator(['/usr/bin/python3', str(fake)])
     assert not runs_our_simulator(['/usr/bin/python3', '-c', 'x', SIMULATOR + 'x'])
+    # the script is what python runs, not any word of the command line
+    assert not runs_our_simulator(['/usr/bin/python3', str(fake), SIMULATOR])
+    assert not runs_our_simulator(['/usr/bin/python3', '-c', 'import os', SIMULATOR])
+    assert not runs_our_simulator(['/usr/bin/python3', '-m', 'http.server', SIMULATOR])
+    assert runs_our_simulator(['/usr/bin/python3', '-u', '-X', 'dev', SIMULATOR])
+    # a program that only names itself python does not pass for it
+    assert not runs_our_simulator([SIMULATOR], executable='/usr/bin/python3.11')
+    assert not runs_our_simulator(['/usr/bin/python3', SIMULATOR], executable='/tmp/evil')
+    assert runs_our_simulator(['/usr/bin/python3', SIMULATOR], executable='/usr/bin/python3.11')
+
+
+CATKIN_RELAY = '/usr/share/catkin/cmake/templates/script.py.in'
+
+
+def _relay(path, script):
+    with open(CATKIN_RELAY) as f:
+        text = f.read()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text.replace('@PYTHON_EXECUTABLE@', '/usr/bin/python3')
+                    .replace('@PYTHON_SCRIPT@', script))
+    return str(path)
+
+
+@pytest.mark.skipif(not os.path.exists(CATKIN_RELAY), reason='catkin is not installed')
+def test_the_simulator_through_catkins_devel_and_install_spaces(tmp_path):
+    """roslaunch of this package in a workspace starts devel/lib/.../simulator.py,
+    catkin's relay to the source; an install space holds a copy with its own
+    first line. Both are the simulator; a relay to another script, an edited
+    copy, or any of them in a place the run can write, are not."""
+    from exp_assignment2.grading.paths import SIMULATOR
+    from exp_assignment2.grading.peer import runs_our_simulator, runs_simulator_file
+    relay = _relay(tmp_path / 'ws' / 'devel' / 'lib' / 'exp_assignment2' / 'simulator.py',
+                   SIMULATOR)
+    assert runs_simulator_file(relay) == 'relay'
+    assert runs_our_simulator(['/usr/bin/python3', relay, '__name:=gazebo'])
+    # the workspace's src links to the repository, as tools/run makes it
+    os.symlink(os.path.dirname(os.path.dirname(SIMULATOR)), str(tmp_path / 'src_link'))
+    linked = _relay(tmp_path / 'ws2' / 'simulator.py',
+                    str(tmp_path / 'src_link' / 'scripts' / 'simulator.py'))
+    assert runs_our_simulator(['/usr/bin/python3', linked])
+    fake = tmp_path / 'fake.py'
+    fake.write_text('print("I am the simulator")')
+    other = _relay(tmp_path / 'ws3' / 'simulator.py', str(fake))
+    assert not runs_our_simulator(['/usr/bin/python3', other])
+    with open(relay) as f:
+        tampered = f.read() + 'import os\n'
+    (tmp_path / 'tampered.py').write_text(tampered)
+    assert not runs_our_simulator(['/usr/bin/python3', str(tmp_path / 'tampered.py')])
+    with open(SIMULATOR) as f:
+        source = f.read()
+    installed = tmp_path / 'install' / 'lib' / 'exp_assignment2' / 'simulator.py'
+    installed.parent.mkdir(parents=True)
+    installed.write_text('#!/usr/bin/python3.11\n' + source.split('\n', 1)[1])
+    assert runs_simulator_file(str(installed)) == 'copy'
+    assert runs_our_simulator(['/usr/bin/python3', str(installed)])
+    installed.write_text('#!/usr/bin/python3\n' + source.split('\n', 1)[1] + 'x = 1\n')
+    assert not runs_our_simulator(['/usr/bin/python3', str(installed)])
+    # the same relay in the run's writable directory: it could be changed after the start
+    from exp_assignment2.grading.sandbox import mount_table, writable_at
+    mounts = mount_table(str(tmp_path / 'ws'), hidden=[str(tmp_path)],
+                         readonly=[str(tmp_path / 'ws2')])
+
+    def may_write(path):
+        return writable_at(path, mounts)
+    assert not runs_our_simulator(['/usr/bin/python3', relay], may_write=may_write)
+    assert runs_our_simulator(['/usr/bin/python3', linked], may_write=may_write)
+    assert runs_our_simulator(['/usr/bin/python3', SIMULATOR], may_write=may_write)
+    assert may_write('/tmp/x') and not may_write('/usr/lib/x')
+    assert may_write(str(tmp_path / 'hidden_here')) and not may_write(linked)

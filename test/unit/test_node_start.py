@@ -53,3 +53,47 @@ def test_a_file_without_a_first_line_or_py_suffix_is_left_to_ros(tmp_path):
     path.write_text('echo hi\n')
     path.chmod(0o644)
     assert exp2_node_start.command(str(path)) is None
+
+
+class _FakeNodeArgs(object):
+    """roslaunch.node_args as far as the patch uses it: a node found only under
+    the names in ``files``."""
+
+    class NodeParamsException(Exception):
+        pass
+
+    def __init__(self, files):
+        import types
+        self.files = files
+        self.roslib = types.SimpleNamespace(packages=types.SimpleNamespace(
+            find_node=lambda package, name: list(files.get((package, name), []))))
+
+        def create_local_process_args(node, machine, env=None):
+            found = self.roslib.packages.find_node(node.package, node.type)
+            if not found:
+                raise self.NodeParamsException('Cannot locate node of type [%s]' % node.type)
+            return [found[0], '__name:=' + node.name]
+        self.create_local_process_args = create_local_process_args
+
+
+def test_a_node_type_noetic_renamed_starts_under_its_new_name(tmp_path, monkeypatch, capsys):
+    """Kinetic's launch files say robot_state_publisher/state_publisher; Noetic
+    has only robot_state_publisher/robot_state_publisher: that is started, and
+    one line says so; a type that exists under neither name still fails."""
+    import types
+    program = tmp_path / 'robot_state_publisher'
+    program.write_text('#!/bin/sh\n')
+    program.chmod(0o755)
+    fake = _FakeNodeArgs({('robot_state_publisher', 'robot_state_publisher'): [str(program)]})
+    monkeypatch.setattr(exp2_node_start, 'find_file', lambda package, name: (None, False))
+    exp2_node_start._patch_node_args(fake)
+    node = types.SimpleNamespace(package='robot_state_publisher', type='state_publisher',
+                                 name='rsp')
+    assert fake.create_local_process_args(node, None) == [str(program), '__name:=rsp']
+    fake.create_local_process_args(node, None)
+    said = capsys.readouterr().err
+    assert said.count('robot_state_publisher/state_publisher: started as '
+                      'robot_state_publisher/robot_state_publisher') == 1, said
+    missing = types.SimpleNamespace(package='robot_state_publisher', type='no_such', name='x')
+    with pytest.raises(fake.NodeParamsException):
+        fake.create_local_process_args(missing, None)

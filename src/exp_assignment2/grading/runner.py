@@ -141,7 +141,8 @@ class Run(object):
             box = self._sandbox(rtf)
             result['limits'] = box.groups.notes or ['memory %d MB, %d processes' % (
                 self.settings.profile['memory_limit_mb'], self.settings.profile['process_limit'])]
-            truth = TruthServer(os.path.join(self.sockets, 'truth.sock'), self.record)
+            truth = TruthServer(os.path.join(self.sockets, 'truth.sock'), self.record,
+                                may_write=box.may_write)
             self._monitor(box, truth, self._plan(package_dir, self.start), rtf, result)
         except SandboxError as exc:
             result.update(verdict='grader_error', reason=str(exc))

@@ -123,6 +123,23 @@ class ControlGroups(object):
                     time.sleep(0.1)
 
 
+def mount_table(work, hidden=(), readonly=(), sockets=None, binds=()):
+    """[(path, writable)] of a sandbox's mounts, in :meth:`Sandbox.argv`'s order."""
+    found = [('/', False), ('/tmp', True), ('/dev/shm', True), ('/run', True)]
+    found += [(p, True) for p in hidden if os.path.isdir(p)]
+    found += [(p, False) for p in readonly if os.path.exists(p)]
+    found += [(sockets, False)] if sockets else []
+    return found + [(target, True) for _, target in binds] + [(work, True)]
+
+
+def writable_at(path, mounts):
+    """Is ``path`` writable in a sandbox of these mounts? The deepest mount
+    that holds it says (a nested mount is made after, and over, its parent)."""
+    path = os.path.normpath(path)
+    return max((m for m in mounts if path == m[0] or path.startswith(m[0].rstrip(os.sep) + os.sep)),
+               key=lambda m: len(m[0]))[1]
+
+
 class Sandbox(object):
     """One run's sandbox: ``work`` writable, ``hidden`` paths emptied,
     ``readonly`` paths put back inside hidden ones, ``sockets`` (a directory of
@@ -157,6 +174,15 @@ class Sandbox(object):
         for key, value in sorted(self.env.items()):
             args += ['--setenv', key, str(value)]
         return args + ['--'] + list(command)
+
+    def mounts(self):
+        """[(path, writable)] as :meth:`argv` mounts them, later ones over earlier."""
+        return mount_table(self.work, self.hidden, self.readonly, self.sockets, self.binds)
+
+    def may_write(self, path):
+        """Could a process of the run have written the file at ``path`` (as the
+        run sees it)?"""
+        return writable_at(path, self.mounts())
 
     def start(self, command, stdout, stdin=subprocess.PIPE):
         """Start ``command`` in the sandbox (a Popen with text pipes)."""

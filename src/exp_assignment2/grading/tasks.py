@@ -14,6 +14,7 @@ import shutil
 import tarfile
 import tempfile
 import threading
+import time
 
 from exp_assignment2.grading.paths import PACKAGE_XML
 from exp_assignment2.grading.runner import Run, RunSettings
@@ -112,6 +113,23 @@ def unpack_run(data, run_dir):
                 shutil.copyfileobj(src, out)
 
 
+def _watch(run, stop):
+    """Until the run is over, ask ``stop`` whether the teacher cancelled it.
+    A ``stop`` that fails (the grading's connection closing as it ends) is
+    no cancellation: the run goes on, and nothing is printed."""
+    while not run.stop_event.is_set() and run.state != 'done':
+        try:
+            cancelled = stop()
+        except Exception:       # noqa: BLE001 (Dask's comm errors have no common base)
+            if run.state == 'done':
+                return
+            time.sleep(1.0)
+            continue
+        if cancelled:
+            run.stop_event.set()
+            return
+
+
 def run_task(payload, stop=None, scratch_root=None):
     """Run one payload (see cluster.payload) here; returns {'result', 'archive'}.
 
@@ -137,14 +155,14 @@ def run_task(payload, stop=None, scratch_root=None):
                   label=payload['label'])
         watcher = None
         if stop is not None:
-            def watch():
-                while not run.stop_event.is_set() and run.state != 'done':
-                    if stop():
-                        run.stop_event.set()
-                        break
-            watcher = threading.Thread(target=watch, daemon=True)
+            watcher = threading.Thread(target=_watch, args=(run, stop), daemon=True)
             watcher.start()
-        result = run.go()
+        try:
+            result = run.go()
+        finally:
+            if watcher is not None:     # its last look ends within stop()'s second
+                run.state = 'done'
+                watcher.join(5.0)
         data, cut = pack_run(run.dir)
         if cut:
             result['cut'] = cut

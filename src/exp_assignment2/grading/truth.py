@@ -4,8 +4,9 @@ sandbox, where the simulator streams what happens
 
 Only the first connection from a simulator process is taken: the peer's
 process (its credentials, seen from outside the sandbox's namespaces) must
-run this package's simulator script, the file in this repository (which the
-sandbox sees read-only) and not a copy, or the connection is refused and
+run this package's simulator, from the source tree or through catkin's
+relay or installed copy, from a file the run cannot write
+(:mod:`exp_assignment2.grading.peer`), or the connection is refused and
 counted.
 What arrives is written as it arrives to the run's record, outside every
 directory the sandbox can write: states and topics to ``truth.jsonl``,
@@ -15,38 +16,22 @@ import base64
 import json
 import os
 import socket
-import struct
 import threading
 import time
 
-from exp_assignment2.grading.paths import SIMULATOR
+from exp_assignment2.grading.peer import peer_process, runs_our_simulator
 
 MAX_LINE = 8 * 1024 * 1024
-
-
-def peer_command(conn):
-    """(pid, argv) of the process at the other end of a Unix socket."""
-    creds = conn.getsockopt(socket.SOL_SOCKET, socket.SO_PEERCRED, struct.calcsize('3i'))
-    pid = struct.unpack('3i', creds)[0]
-    try:
-        with open('/proc/%d/cmdline' % pid, 'rb') as f:
-            return pid, [a.decode(errors='replace') for a in f.read().split(b'\0') if a]
-    except OSError:
-        return pid, []
-
-
-def runs_our_simulator(argv, script=SIMULATOR):
-    """Is the script this command runs the repository's simulator itself?"""
-    return any(arg.endswith('.py') and os.path.realpath(arg) == script for arg in argv[:3])
 
 
 class TruthServer(object):
     """Listens on ``path``; records into ``record_dir``. ``latest`` is the
     last simulated time heard and the monotonic wall time it came at."""
 
-    def __init__(self, path, record_dir, accept=None):
+    def __init__(self, path, record_dir, may_write=None, accept=None):
         self.path, self.record_dir = path, record_dir
-        self.accept_peer = accept or runs_our_simulator
+        self.accept_peer = accept or (lambda argv, executable: runs_our_simulator(
+            argv, may_write=may_write, executable=executable))
         os.makedirs(os.path.join(record_dir, 'frames'), exist_ok=True)
         if os.path.exists(path):
             os.unlink(path)
@@ -75,8 +60,8 @@ class TruthServer(object):
                 continue
             except OSError:
                 break
-            pid, argv = peer_command(conn)
-            if self.simulator is not None or not self.accept_peer(argv):
+            pid, argv, executable = peer_process(conn)
+            if self.simulator is not None or not self.accept_peer(argv, executable):
                 self.refused.append(' '.join(argv) or 'pid %d' % pid)
                 conn.close()
                 continue

@@ -6,7 +6,9 @@ It is ROS's rosrun, except where the students' machines started a file that
 ROS's rosrun here would not: a script whose first line names Python 2
 (``#!/usr/bin/python``) runs on this shell's ``python``, and a file that lost
 its execute bit runs as if it had it, with one stderr line naming it
-(startup/exp2_node_start.py decides both). Everything else, and every case it
+(startup/exp2_node_start.py decides both), and a node type Noetic renamed
+(``robot_state_publisher state_publisher``) runs under its Noetic name, with
+one line. Everything else, and every case it
 does not recognise, goes to ROS's rosrun unchanged.
 """
 import os
@@ -40,6 +42,10 @@ def main(argv):
         return real
     try:
         path, executable = exp2_node_start.find_file(rest[0], rest[1])
+        new = exp2_node_start.renamed(rest[0], rest[1]) if path is None else None
+        if new is not None and exp2_node_start.find_file(rest[0], new)[0]:
+            exp2_node_start.tell_renamed(rest[0], rest[1])
+            return [real_rosrun()] + argv[:len(argv) - len(rest)] + [rest[0], new] + rest[2:]
     except Exception:       # no such package: ROS's rosrun says so
         return real
     start = exp2_node_start.command(path) if path else None

@@ -1,7 +1,7 @@
 """How roslaunch and rosrun start a node's file in the original-code shell:
 as the students' machines started it.
 
-Two things there worked that do not here:
+Three things there worked that do not here:
 
 * a script whose first line names Python 2 (``#!/usr/bin/python``,
   ``#!/usr/bin/python2``, ``#!/usr/bin/env python2``): Ubuntu had that
@@ -12,7 +12,11 @@ Two things there worked that do not here:
   commit from Windows): on the student's machine it was executable. It is
   started as if it were, through the interpreter its first line names
   (``python`` for a Python one, and for a ``.py`` file without one), and
-  stderr says which file, once.
+  stderr says which file, once;
+* a node type of an earlier ROS 1 release that Noetic dropped
+  (:data:`RENAMED`, from the Noetic migration notes), such as
+  ``robot_state_publisher``'s ``state_publisher``: the same program under
+  Noetic's name is started, with one stderr line naming both.
 
 :func:`command` decides for one file; :func:`install` patches
 ``roslaunch.node_args.create_local_process_args`` when roslaunch imports it;
@@ -24,6 +28,13 @@ import sys
 
 # the names of a Python that is not Python 3: Ubuntu's python, python2, python2.7
 PYTHON_NOT_3 = re.compile(r'^python(2(\.\d+)?)?$')
+# (package, type) of Kinetic's and Melodic's launch files -> Noetic's type, and since when.
+# xacro's xacro.py is the other such name: it is a file of the xacro stand-in
+# (launch_packages.ALIASES), found by $(find xacro)/xacro.py as before.
+RENAMED = {
+    ('robot_state_publisher', 'state_publisher'):
+        ('robot_state_publisher', 'an older name of the same program, removed in Noetic'),
+}
 _told = set()
 
 
@@ -82,6 +93,24 @@ def tell_not_executable(paths):
         sys.stderr.flush()
 
 
+def renamed(package, name):
+    """Noetic's type for an earlier release's (package, type), or None."""
+    found = RENAMED.get((package, name))
+    return found[0] if found else None
+
+
+def tell_renamed(package, name):
+    """One stderr line for a node type started under Noetic's name (each once)."""
+    key = ('renamed', package, name)
+    if key not in _told:
+        _told.add(key)
+        new, since = RENAMED[(package, name)]
+        sys.stderr.write('[original-env] %s/%s: started as %s/%s, its name in ROS Noetic (%s; '
+                         'the launch file is not changed)\n' % (package, name, package, new,
+                                                                 since))
+        sys.stderr.flush()
+
+
 def find_file(package, name, rospack=None):
     """(path, executable) of the file ``name`` in ``package`` that rosrun and
     roslaunch would start: the executable one, else the only plain file
@@ -108,6 +137,11 @@ def _patch_node_args(node_args):
                 path, _ = find_file(node.package, node.type)
             except Exception:
                 path = None
+            new = renamed(node.package, node.type) if path is None else None
+            if new is not None:
+                args = _renamed_args(original, packages, node, machine, env, new)
+                if args is not None:
+                    return args
             if path is None or command(path) is None:
                 raise
             # roslaunch's own command line, with the file taken as it would take
@@ -129,6 +163,21 @@ def _patch_node_args(node_args):
         return args[:index] + start + args[index + 1:]
 
     node_args.create_local_process_args = create_local_process_args
+
+
+def _renamed_args(original, packages, node, machine, env, new):
+    """roslaunch's command line for ``node`` under Noetic's type ``new``, or None."""
+    matches = packages.find_node(node.package, new)
+    if not matches:
+        return None
+    find_node = packages.find_node
+    packages.find_node = lambda *a, **k: matches[:1]
+    try:
+        args = original(node, machine, env=env)
+    finally:
+        packages.find_node = find_node
+    tell_renamed(node.package, node.type)
+    return args
 
 
 def install():
