@@ -1,6 +1,7 @@
 """The grader's fixture folder: submissions written here, one per way a
 submission can end (test/fixtures/grading/base is the dog that works; the
-others are it with one thing changed). ``make_folder(dest)`` writes them.
+others are it with one thing changed, e.g. ``missing_node``: its launch file
+also names a node whose script is not there). ``make_folder(dest)`` writes them.
 
     /usr/bin/python3 test/grading_fixtures.py DEST    (for bench/ and by hand)
 """
@@ -21,7 +22,7 @@ EXPECTED = {'works': 'passed', 'tabs': 'passed', 'cpp_broken': 'not_built',
             'raises': 'crashed', 'idle': 'failed_checks', 'hostile': None,
             'zipped': 'passed', 'tarred': 'passed', 'old_names': 'passed',
             'own_world': 'passed', 'alternatives': 'passed', 'other_name': 'passed',
-            'imshow': 'passed'}
+            'missing_node': 'passed', 'imshow': 'passed'}
 
 RAISES = '''#!/usr/bin/env python3
 import rospy
@@ -337,6 +338,20 @@ def _cpp_broken(dest):
         f.write(text)
 
 
+LAUNCH = os.path.join('launch', 'gazebo_world.launch')
+# a node whose script is not in the package: roslaunch says it cannot launch
+# it and runs every other node, so the dog still does its work
+MISSING_NODE = '  <node name="ghost" pkg="exp_assignment2" type="ghost.py" output="screen"/>\n'
+
+
+def _missing_node(dest):
+    path = os.path.join(dest, LAUNCH)
+    with open(path) as f:
+        text = f.read()
+    with open(path, 'w') as f:
+        f.write(text.replace('</launch>', MISSING_NODE + '</launch>'))
+
+
 # a Kinetic-era launch file: robot_state_publisher's old node type
 OLD_STATE_PUBLISHER = '''    <node name="robot_state_publisher" pkg="robot_state_publisher"
           type="state_publisher"/>
@@ -448,6 +463,8 @@ def make_folder(dest, names=None):
             _replace(package, DOG, IDLE)
         elif name == 'hostile':
             _replace(package, DOG, HOSTILE)
+        elif name == 'missing_node':
+            _missing_node(package)
         elif name == 'old_names':
             path = os.path.join(package, 'launch', 'gazebo_world.launch')
             with open(path) as f:

@@ -5,13 +5,15 @@
 on the fixture folder (test/grading_fixtures.py: a dog that works, one with
 Python 2's tabs, a C++ node that does not compile, a node that raises at
 start, one that never moves, a hostile one, the dog as a .zip and as a
-.tar.gz, a README offering alternatives and one naming another package, a
-node that shows every camera frame in a window). Each ends with its expected
-verdict; the folder and everything outside the runs' directories are unchanged; the hostile run costs only its
-own verdict (the dog graded alone gets the verdict it gets beside it); every
-process of every run is gone; the report's pages open in headless Chromium
-with no missing image.
+.tar.gz, a README offering alternatives, one naming another package, one
+whose launch file names a node that is not there, and a node that shows
+every camera frame in a window). Each ends with its expected verdict; the
+folder and everything outside the runs' directories are unchanged; the
+hostile run costs only its own verdict (the dog graded alone gets the
+verdict it gets beside it); every process of every run is gone; the report's
+pages open in headless Chromium with no missing image.
 """
+import collections
 import html
 import json
 import os
@@ -73,11 +75,21 @@ def test_each_submission_gets_its_verdict(graded):
     assert graded['by_name']['raises']['reason'] == \
         'dog-5 died (exit code 1): RuntimeError: the dog has no legs'
     assert graded['by_name']['idle']['reason'].startswith('failed: reaches the ball')
-    summary = graded['proc'].stdout.strip().splitlines()[-1]
-    counts = {v: list(got.values()).count(v) for v in set(got.values())}
-    assert summary.startswith('[grade] graded %d submissions: %d passed, %d failed_checks'
-                              % (len(grading_fixtures.EXPECTED), counts['passed'],
-                                 counts['failed_checks'])), summary
+    # roslaunch's rule: the node that could not start is noted, on its own command
+    (error,) = graded['by_name']['missing_node']['launch_errors']
+    assert error['command'] == 'roslaunch exp_assignment2 gazebo_world.launch', error
+    assert error['line'].startswith('ERROR: cannot launch node of type '
+                                    '[exp_assignment2/ghost.py]'), error
+    with open(os.path.join(graded['out'], 'pages', 'missing_node.html')) as f:
+        assert 'Nodes that could not start (1)' in f.read()
+    # the terminal's summary line counts the verdicts the report has (the hostile's as it came)
+    summary = [l for l in graded['proc'].stdout.splitlines() if l.startswith('[grade] graded ')]
+    summary = summary[-1] if summary else graded['proc'].stdout[-2000:]
+    counts = collections.Counter(got.values())
+    assert summary.startswith('[grade] graded %d submissions: %s; report: ' % (
+        len(grading_fixtures.EXPECTED), ', '.join('%d %s' % (counts[v], v) for v in (
+            'passed', 'failed_checks', 'crashed', 'timed_out', 'not_started', 'not_built',
+            'grader_error') if counts[v]))), summary
     # nothing of the grader's own machinery on the teacher's terminal
     assert 'Traceback' not in graded['proc'].stdout, graded['proc'].stdout[-3000:]
 

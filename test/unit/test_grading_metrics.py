@@ -1,5 +1,6 @@
 """A run's figures and verdict from what the grader saw
-(exp_assignment2.grading.metrics, .verdicts), on hand-made records."""
+(exp_assignment2.grading.metrics, .verdicts), on hand-made records (each
+verdict rule alone: test_grading_verdicts.py)."""
 import json
 import math
 import os
@@ -66,14 +67,6 @@ def test_miro_arrivals_at_the_commanded_targets():
     assert got['arrival_ratio'] == (0.667, True)
 
 
-def test_tracebacks_in_a_log():
-    text = ('[INFO] starting\nTraceback (most recent call last):\n  File "x.py", line 3, '
-            'in <module>\n    go()\nZeroDivisionError: division by zero\n[INFO] more\n')
-    found = metrics.tracebacks(text, 'logs/command-0.log')
-    assert [(e['line'], e['summary']) for e in found] == [(2, 'ZeroDivisionError: division '
-                                                              'by zero')]
-
-
 def write_run(tmp_path, logs, events, states=()):
     work, record = tmp_path / 'work', tmp_path / 'record'
     for rel, text in logs.items():
@@ -99,14 +92,41 @@ def test_verdicts_tell_causes_apart(tmp_path):
         work, record, result = write_run(tmp_path / name, logs, events, states)
         result.update(extra)
         return verdicts.judge(work, record, result, DOG)
-    got = judge('build', {'logs/build.log': '[original-env] src/a.cpp:3: error: expected '
-                          "';' (full log: x)\n"}, [{'event': 'built', 'rc': 1}])
-    assert (got['verdict'], got['reason']) == ('not_built', "src/a.cpp:3: error: expected ';' "
-                                                            '(full log: x)')
-    got = judge('start', {'logs/command-0.log': 'ERROR: cannot launch node of type '
-                          '[p/dog.py]: Cannot locate node of type [dog.py] in package [p]\n'})
+    # the build's first error as the driver sent it, not read back out of its log
+    got = judge('build', {'logs/build.log': '[original-env] something else entirely\n'},
+                [{'event': 'built', 'rc': 1, 'error': {
+                    'file': str(tmp_path / 'build' / 'work' / 'src' / 'src' / 'a.cpp'),
+                    'line': 3, 'message': "expected ';' before 'return'"}}])
+    assert (got['verdict'], got['reason']) == ('not_built', "src/a.cpp:3: expected ';' before "
+                                                            "'return'")
+    missing = ('ERROR: cannot launch node of type [p/dog.py]: Cannot locate node of type '
+               '[dog.py] in package [p]\n')
+    # nothing else ran: the node that could not start is why
+    got = judge('start', {'logs/command-0.log': missing})
     assert got['verdict'] == 'not_started'
     assert got['reason'].startswith('roslaunch p a.launch: ERROR: cannot launch node of type')
+    # the rest ran, as roslaunch runs it: the verdict follows the robot, the error is kept
+    got = judge('missing', {'logs/command-0.log': missing}, states=dog_states())
+    assert got['verdict'] == 'passed', got
+    assert got['launch_errors'] == [{'command': 'roslaunch p a.launch',
+                                     'line': missing.strip(), 'log': 'logs/command-0.log'}]
+    # a command that started nothing, attributed to its own command (today's slip: the
+    # rosrun that exited was blamed for the roslaunch's error)
+    two = [{'event': 'built', 'rc': 0},
+           {'event': 'started', 'index': 0, 'command': 'roslaunch p a.launch'},
+           {'event': 'started', 'index': 1, 'command': 'rosrun p ghost.py'},
+           {'event': 'exited', 'index': 1, 'command': 'rosrun p ghost.py', 'rc': 1}]
+    got = judge('two', {'logs/command-0.log': 'RLException: Invalid roslaunch XML syntax\n',
+                        'logs/command-1.log': ''}, two)
+    assert (got['verdict'], got['reason']) == (
+        'not_started', 'roslaunch p a.launch: RLException: Invalid roslaunch XML syntax')
+    got = judge('two_b', {'logs/command-0.log': 'process[dog-1]: started with pid [9]\n',
+                          'logs/command-1.log': "[rosrun] Couldn't find executable named "
+                                                'ghost.py below /w\n'}, two,
+                states=dog_states())
+    assert (got['verdict'], got['reason']) == (
+        'not_started', "rosrun p ghost.py: [rosrun] Couldn't find executable named ghost.py "
+                       'below /w')
     crash = ('Traceback (most recent call last):\n  File "dog.py", line 4\n'
              'RuntimeError: the dog has no legs\n'
              '[dog-5] process has died [pid 88, exit code 1, cmd /w/dog.py __name:=dog].\n')
@@ -122,6 +142,10 @@ def test_verdicts_tell_causes_apart(tmp_path):
                 ended_by='wall_limit')
     assert (got['verdict'], got['reason']) == ('timed_out', '5 of 200 simulated s within the '
                                                             'wall-clock limit')
+    # the run's own duration (--duration 60), not the profile's
+    got = judge('slow60', {'logs/command-0.log': ''}, states=dog_states(until=5),
+                ended_by='wall_limit', duration=60.0)
+    assert got['reason'] == '5 of 60 simulated s within the wall-clock limit'
     got = judge('ok', {'logs/command-0.log': ''}, states=dog_states())
     assert got['verdict'] == 'passed', got
     got = judge('still', {'logs/command-0.log': ''}, states=dog_states(wiggle=0.1))

@@ -8,7 +8,7 @@ from exp_assignment2.grading import profiles, report
 DOG = profiles.load('dog')
 
 
-def write_run(runs_dir, label, name, verdict, head, rtf=1.0, seed=1):
+def write_run(runs_dir, label, name, verdict, head, rtf=1.0, seed=1, **more):
     record = os.path.join(runs_dir, label, 'record')
     os.makedirs(os.path.join(record, 'frames'))
     checks = [{'name': c['name'], 'metric': c['metric'], 'value': head, 'threshold': '>= 0.6',
@@ -23,7 +23,7 @@ def write_run(runs_dir, label, name, verdict, head, rtf=1.0, seed=1):
                    'reason': '' if verdict == 'passed' else 'failed: x', 'seed': seed,
                    'real_time_factor': rtf, 'real_time_factor_asked': 1.0,
                    'commands': ['roslaunch p a.launch'], 'commands_from': 'README.md',
-                   'truth': {'sim_time': 5.0}, 'wall_time': 6.0}, f)
+                   'truth': {'sim_time': 5.0}, 'wall_time': 6.0, **more}, f)
 
 
 def test_repeats_give_the_majority_and_the_median_and_say_flaky(tmp_path):
@@ -50,11 +50,44 @@ def test_repeats_give_the_majority_and_the_median_and_say_flaky(tmp_path):
     assert all({'value', 'threshold', 'passed'} <= set(c) for s in data['submissions']
                for c in s['checks'])
     index = (tmp_path / 'index.html').read_text()
-    assert 'flaky' in index and 'pages/ann.html' in index
+    # the stylesheet names .flaky on every page: the mark itself, on ann's row only
+    rows = {name: row for name, row in (r.split('</td>', 1) for r in
+                                        index.split('<tr><td><a href="pages/')[1:])}
+    assert set(rows) == {'ann.html">ann</a>', 'ben.html">ben</a>'}
+    assert '<span class="flaky">flaky</span>' in rows['ann.html">ann</a>']
+    assert '<span class="flaky">flaky</span>' not in rows['ben.html">ben</a>']
     page = (tmp_path / 'pages' / 'ann.html').read_text()
     for img in ('img/ann-r1_top.png', 'img/ann-r1_head.png'):
         assert img in page and os.path.exists(str(tmp_path / 'pages' / img))
     assert '(below 0.95: starved)' in page
+
+
+def test_a_page_says_why_a_node_died_and_which_could_not_start(tmp_path):
+    runs = str(tmp_path / 'runs')
+    died = [{'node': 'viewer-3', 'code': -6, 'exit': '-6 (SIGABRT)', 'cmd': 'viewer.py',
+             'log': 'logs/command-0.log', 'output': 'the camera is up\nqt.qpa.xcb: could not '
+             'connect to display', 'abort': 'qt.qpa.xcb: could not connect to display',
+             'node_logs': [{'log': 'ros_home/log/abc/viewer-3.log', 'tail': 'init_node'}]}]
+    missing = [{'command': 'roslaunch p a.launch', 'log': 'logs/command-0.log',
+                'line': 'ERROR: cannot launch node of type [p/ghost.py]: Cannot locate'}]
+    write_run(runs, 'cat', 'cat', 'crashed', 0.0, died=died)
+    write_run(runs, 'dan', 'dan', 'passed', 1.0, launch_errors=missing)
+    write_run(runs, 'eve', 'eve', 'passed', 1.0)
+    summaries = report.write(str(tmp_path), DOG)
+    cat = (tmp_path / 'pages' / 'cat.html').read_text()
+    assert '<h3>viewer-3: exit code -6 (SIGABRT)</h3>' in cat
+    assert '<pre class="abort">qt.qpa.xcb: could not connect to display</pre>' in cat
+    assert 'the camera is up' in cat and 'ros_home/log/abc/viewer-3.log' in cat
+    dan = (tmp_path / 'pages' / 'dan.html').read_text()
+    assert '<h2>Nodes that could not start (1)</h2>' in dan
+    assert '<code>roslaunch p a.launch</code>: ERROR: cannot launch node of type' in dan
+    eve = (tmp_path / 'pages' / 'eve.html').read_text()
+    assert 'Nodes that could not start' not in eve and 'Nodes that died' not in eve
+    # and in report.json, for a program to read
+    assert summaries['cat']['died'][0]['abort'] == 'qt.qpa.xcb: could not connect to display'
+    with open(str(tmp_path / 'report.json')) as f:
+        data = {s['name']: s for s in json.load(f)['submissions']}
+    assert data['dan']['launch_errors'] == missing and data['cat']['died'] == died
 
 
 def test_a_tie_goes_to_the_worse_verdict():

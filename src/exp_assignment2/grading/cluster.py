@@ -15,13 +15,12 @@ worker started with ``--resources runs=K`` takes at most K runs at once.
 * Ctrl-C (or SIGTERM) sets a Dask event that every running task polls: its
   run is ended at once (its sandbox killed), and the futures are cancelled.
 """
-import os
 import socket
 import time
 import uuid
 import warnings
 
-from exp_assignment2.grading import tasks
+from exp_assignment2.grading import record, tasks
 
 CONNECT_TIMEOUT = 5.0          # s to reach a scheduler, then one line
 
@@ -162,8 +161,7 @@ def unpack_result(outcome, run, started):
         result.setdefault('notes', []).append(
             'run again: its worker %s was lost in the middle of the run; done on %s'
             % (', '.join(workers[:-1]), workers[-1]))
-    _rewrite(run, result)
-    return result
+    return _rewrite(run, result)
 
 
 def lost_result(run, error, started):
@@ -175,20 +173,16 @@ def lost_result(run, error, started):
 
 def refused_result(run, reason, workers=()):
     """A run that did not run, for a reason of the grader's or the teacher's."""
-    result = {'name': run.submission.name, 'label': run.label, 'seed': run.seed,
-              'verdict': 'grader_error', 'commands': run.spec.commands,
-              'commands_from': run.spec.commands_from,
-              'readme_commands': run.spec.readme_commands,
-              'reason': reason, 'workers': list(workers), 'truth': {'sim_time': 0.0},
-              'notes': list(run.spec.notes)}
-    os.makedirs(run.record, exist_ok=True)
-    _rewrite(run, result)
-    return result
+    result = record.RunRecord.new(
+        run.spec.name, run.label, run.seed, verdict='grader_error',
+        commands=run.spec.commands, commands_from=run.spec.commands_from,
+        readme_commands=run.spec.readme_commands, reason=reason, workers=list(workers),
+        truth={'sim_time': 0.0}, notes=list(run.spec.notes), duration=run.spec.duration,
+        ended_by='not_run')
+    return _rewrite(run, result)
 
 
 def _rewrite(run, result):
-    import json
-    os.makedirs(run.record, exist_ok=True)
-    with open(os.path.join(run.record, 'run.json'), 'w') as f:
-        json.dump(result, f, indent=1, default=str)
-    run.result, run.state = result, 'done'
+    """The record written (through its one writer) and kept as the run's result."""
+    run.result, run.state = record.write(run.record, result), 'done'
+    return run.result

@@ -26,8 +26,9 @@ import sys
 import threading
 import time
 
-# this repository's src: src/exp_assignment2/grading/inside.py -> three levels up
-SRC = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
+# run as a script: this file's directory is first on sys.path, so paths.py is
+# importable as it is (this repository's src, found once there)
+from paths import SRC  # noqa: E402
 
 MASTER_WAIT = 30.0      # s for the master to answer
 GRACE = 8.0             # s between SIGINT and SIGTERM, and SIGTERM and SIGKILL
@@ -40,10 +41,21 @@ def emit(event, **fields):
     sys.stdout.flush()
 
 
+def build_error(exc):
+    """The build's first error as data: {file, line, message} (file and line None if unknown)."""
+    where, line = getattr(exc, 'where', None), None
+    if where:
+        head, _, tail = where.rpartition(':')
+        if head and tail.isdigit():
+            where, line = head, int(tail)
+    return {'file': where, 'line': line, 'message': getattr(exc, 'message', None) or str(exc)}
+
+
 def original_env(plan):
-    """The original-code environment for the plan's package, or None if it
-    cannot be made (the reason's one line, and the build's progress, in
-    logs/build.log, as the original-code shell prints them)."""
+    """(the original-code environment for the plan's package, None), or
+    (None, its first error as data) if it cannot be made (the reason's one
+    line, and the build's progress, in logs/build.log, as the original-code
+    shell prints them)."""
     sys.path.insert(0, SRC)
     from exp_assignment2.original_env.environment import NoWorkspace, environment
     from exp_assignment2.original_env.overlay.build import BuildFailed
@@ -55,10 +67,10 @@ def original_env(plan):
         try:
             env = environment(plan['package'], bin_dir=plan.get('bin_dir'))
             sys.stderr.write('[original-env] enabled: %s\n' % env['EXP2_ORIGINAL_ENV'])
-            return env
+            return env, None
         except (NoWorkspace, BuildFailed) as exc:
             sys.stderr.write('[original-env] %s\n' % exc)
-            return None
+            return None, build_error(exc)
         except Exception as exc:        # a bug of ours: the grader's, said in the log
             sys.stderr.write('[original-env] the environment could not be made: %r\n' % exc)
             raise
@@ -144,8 +156,8 @@ def main(argv):
         return 0
     # in this thread: the overlay's lock times out with SIGALRM; a build past
     # the grader's limit ends with the sandbox
-    env = original_env(plan)
-    emit('built', rc=0 if env is not None else 1)
+    env, error = original_env(plan)
+    emit('built', rc=0 if env is not None else 1, error=error)
     if env is None:
         end_all(shown)
         return 0

@@ -1,5 +1,6 @@
 """Figures of a run from what was observed outside the student's code (no ROS):
-the simulator's ground truth (:class:`Trace`) and the run's logs.
+the simulator's ground truth (:class:`Trace`) and the tracebacks found in the
+run's logs (read by :mod:`exp_assignment2.grading.logs`).
 
 Each metric is ``fn(trace, profile, check) -> (value, detail)``; a profile's
 check names one in ``metric`` and gives its thresholds (``min``/``max``) and
@@ -7,7 +8,6 @@ its own settings (``reach``, ``joint``, ...). ``value`` None means the
 figure could not be had (the check then fails, saying why in ``detail``).
 """
 import math
-import re
 
 RESET_JUMP = 3.0     # m in one sample (0.1 s): a reset or a teleport, not a path
 
@@ -183,22 +183,3 @@ def evaluate(trace, profile):
                         'threshold': threshold, 'passed': bool(passed), 'detail': detail})
     return results
 
-
-TRACEBACK = re.compile(r'^Traceback \(most recent call last\):')
-
-
-def tracebacks(text, source):
-    """[{source, line, summary, excerpt}] of the Python tracebacks in a log's text."""
-    lines = text.splitlines()
-    found = []
-    for i, line in enumerate(lines):
-        if not TRACEBACK.match(line.strip()):
-            continue
-        end = i + 1
-        while end < len(lines) and (lines[end].startswith((' ', '\t')) or
-                                    lines[end].startswith('During handling')):
-            end += 1
-        summary = lines[end].strip() if end < len(lines) else 'Traceback'
-        found.append({'source': source, 'line': i + 1, 'summary': summary[:300],
-                      'excerpt': '\n'.join(lines[max(0, i - 3):end + 1])[-4000:]})
-    return found

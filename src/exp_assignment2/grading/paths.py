@@ -1,8 +1,15 @@
-"""Where the grader's own files are (no ROS): found here once, imported by
-the rest. ``inside.py`` runs in the sandbox by path and finds ``src`` itself."""
+"""Where things are in this repository: found here once, imported by the rest.
+
+No import of the package: ``inside.py`` runs in the sandbox as a script and
+imports this file as ``paths`` (its own directory is first on ``sys.path``).
+"""
 import os
 
-# src/exp_assignment2/grading/paths.py -> the repository (a workspace links to it)
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
-    os.path.realpath(__file__)))))
+# src/exp_assignment2/grading/paths.py -> the repository (the workspace links to it)
+GRADING = os.path.dirname(os.path.realpath(__file__))
+SRC = os.path.dirname(os.path.dirname(GRADING))
+REPO = os.path.dirname(SRC)
+INSIDE = os.path.join(GRADING, 'inside.py')
 SIMULATOR = os.path.join(REPO, 'scripts', 'simulator.py')
+PROFILE_DIR = os.path.join(REPO, 'config', 'grading')
+PACKAGE_XML = os.path.join(REPO, 'package.xml')

@@ -11,9 +11,8 @@ import os
 import yaml
 
 from exp_assignment2.grading.metrics import METRICS
+from exp_assignment2.grading.paths import PROFILE_DIR
 
-PROFILE_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
-    os.path.dirname(os.path.abspath(__file__))))), 'config', 'grading')
 REQUIRED = ('name', 'duration', 'default_commands', 'robot', 'checks')
 KEYS = {'name', 'title', 'duration', 'default_commands', 'world_commands', 'delay', 'cpu_per_run',
         'memory_limit_mb', 'process_limit', 'robot', 'ball', 'camera', 'record_topics',

@@ -14,10 +14,11 @@ import os
 import shutil
 import statistics
 
-from exp_assignment2.grading import figures, metrics
+from exp_assignment2.grading import figures, metrics, record
+from exp_assignment2.grading.logs import read_log
 from exp_assignment2.grading.report_camera import camera_section, window_pictures
 from exp_assignment2.grading.truth import read_record
-from exp_assignment2.grading.verdicts import VERDICTS, read_log
+from exp_assignment2.grading.verdicts import VERDICTS
 
 COLOURS = {'passed': '#2e7d32', 'failed_checks': '#ef6c00', 'crashed': '#c62828',
            'timed_out': '#6a1b9a', 'not_started': '#ad1457', 'not_built': '#4e342e',
@@ -42,19 +43,8 @@ document.body.setAttribute('data-images-missing',n);});'''
 
 
 def load_runs(runs_dir):
-    """[run result] of every run directory that has a record."""
-    runs = []
-    if not os.path.isdir(runs_dir):
-        return runs
-    for label in sorted(os.listdir(runs_dir)):
-        path = os.path.join(runs_dir, label, 'record', 'run.json')
-        if os.path.exists(path):
-            with open(path) as f:
-                try:
-                    runs.append(json.load(f))
-                except ValueError:
-                    continue
-    return runs
+    """[run record] of every run directory that has one (read by grading.record)."""
+    return record.load_all(runs_dir)
 
 
 def _majority(verdicts):
@@ -90,7 +80,9 @@ def summarise(runs):
                      'slow': any((r.get('real_time_factor') or 1.0) < 0.95 * (
                          r.get('real_time_factor_asked') or 1.0) for r in group
                          if r.get('real_time_factor') is not None),
-                     'seeds': [r.get('seed') for r in group]}
+                     'seeds': [r.get('seed') for r in group],
+                     'died': main.get('died') or [],
+                     'launch_errors': main.get('launch_errors') or []}
     return out
 
 
@@ -198,11 +190,8 @@ def _page(summary, runs, runs_dir, pictures, profile):
                          _e(run.get('repeat_command'))))
     parts.append('</table>')
     errors = main.get('errors') or []
-    died = main.get('died') or []
-    if died:
-        parts.append('<h2>Nodes that died</h2><ul>%s</ul>' % ''.join(
-            '<li>%s: exit code %s (%s)</li>' % (_e(d['node']), _e(d['code']), _e(d['log']))
-            for d in died))
+    parts.extend(_launch_errors_section(main))
+    parts.extend(_deaths_section(main))
     if errors:
         parts.append('<h2>Errors (%d)</h2>' % main.get('error_count', len(errors)))
         for error in errors[:10]:
@@ -219,6 +208,37 @@ def _page(summary, runs, runs_dir, pictures, profile):
     parts.append('<p>Package version %s. Records: <code>%s</code></p></body></html>'
                  % (_e(main.get('version', '?')), _e(os.path.join(runs_dir, main['label']))))
     return ''.join(parts)
+
+
+def _launch_errors_section(run):
+    """roslaunch's nodes that could not start: errors on the page, not a verdict."""
+    errors = run.get('launch_errors') or []
+    if not errors:
+        return []
+    return ['<h2>Nodes that could not start (%d)</h2><p>roslaunch reported these and started '
+            'the rest of its nodes; the verdict follows what the robot did.</p><ul>%s</ul>' % (
+                len(errors), ''.join('<li><code>%s</code>: %s</li>' % (
+                    _e(e.get('command')), _e(e.get('line'))) for e in errors))]
+
+
+def _deaths_section(run):
+    """Each node that died: its exit (a signal named), the message of its
+    abort, the last lines of its output and of its own log."""
+    died = run.get('died') or []
+    if not died:
+        return []
+    parts = ['<h2>Nodes that died (%d)</h2>' % len(died)]
+    for d in died:
+        parts.append('<h3>%s: exit code %s</h3><p>said in %s</p>' % (
+            _e(d['node']), _e(d.get('exit', d['code'])), _e(d['log'])))
+        if d.get('abort'):
+            parts.append('<p>why it aborted:</p><pre class="abort">%s</pre>' % _e(d['abort']))
+        if d.get('output'):
+            parts.append('<p>the last lines of its output:</p><pre>%s</pre>' % _e(d['output']))
+        for own in d.get('node_logs') or []:
+            parts.append('<p>the last lines of its log %s:</p><pre>%s</pre>' % (
+                _e(own['log']), _e(own['tail'])))
+    return parts
 
 
 def _index(summaries, pictures, profile, title):

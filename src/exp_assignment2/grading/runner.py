@@ -13,7 +13,8 @@ import subprocess
 import threading
 import time
 
-from exp_assignment2.grading import cpu, verdicts
+from exp_assignment2.grading import cpu, logs, record, verdicts
+from exp_assignment2.grading.paths import INSIDE, REPO
 from exp_assignment2.grading.run_files import directory_size, log_sizes, waits_on_wall_clock
 from exp_assignment2.grading.sandbox import Sandbox, SandboxError
 from exp_assignment2.grading.submissions import Submission, SubmissionError, package_name, \
@@ -21,10 +22,6 @@ from exp_assignment2.grading.submissions import Submission, SubmissionError, pac
 from exp_assignment2.grading.truth import TruthServer
 from exp_assignment2.sim.ground_truth import SOCKET_ENV, TOPICS_ENV
 
-# the repository itself (the workspace links to it)
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
-    os.path.realpath(__file__)))))
-INSIDE = os.path.join(REPO, 'src', 'exp_assignment2', 'grading', 'inside.py')
 BUILD_LIMIT = 900.0          # wall s for a build
 START_SLACK = 120.0          # wall s on top of the duration: set-up, starting, ending
 WORK_LIMIT = 2 * 1024 ** 3   # bytes the work directory may hold
@@ -176,6 +173,7 @@ class Run(object):
                 self.state = 'running'
                 built = [e for e in events if e.get('event') == 'built'][0]
                 if built.get('rc') != 0:
+                    result['ended_by'] = 'build_failed'
                     break
             if ending:
                 if now - ending[1] > 40:        # the driver did not end its commands
@@ -200,7 +198,7 @@ class Run(object):
                 last_size_check = now
                 if directory_size(self.work) > WORK_LIMIT:
                     reason = 'disk_limit'
-                elif verdicts.student_node_died(self.work):
+                elif logs.student_node_died(self.work):
                     reason = 'node_died'      # the verdict is 'crashed' whatever comes
             if reason:
                 ending = (reason, now)
@@ -231,6 +229,9 @@ class Run(object):
         result['wall_time'] = time.monotonic() - t0
         result['sandbox_exit'] = proc.returncode
         result['events'] = events
+        built = next((e for e in events if e.get('event') == 'built'), None)
+        if built is not None:
+            result['build'] = {'rc': built.get('rc'), 'error': built.get('error')}
 
     @staticmethod
     def _display_failed(result):
@@ -262,11 +263,11 @@ class Run(object):
                     news.set()
 
     def _finish(self, result):
+        result.setdefault('duration', self.settings.duration)
+        result.setdefault('ended_by', 'not_run')      # not unpacked, or no sandbox
         if 'verdict' not in result:
             result.update(verdicts.judge(self.work, self.record, result, self.settings.profile))
         result['finished'] = time.time()
+        self.result = record.write(self.record, result)
         self.state = 'done'
-        with open(os.path.join(self.record, 'run.json'), 'w') as f:
-            json.dump(result, f, indent=1, default=str)
-        self.result = result
-        return result
+        return self.result

@@ -16,6 +16,7 @@ import tempfile
 import threading
 import time
 
+from exp_assignment2.grading.paths import PACKAGE_XML
 from exp_assignment2.grading.runner import Run, RunSettings
 from exp_assignment2.grading.spec import RunSpec
 from exp_assignment2.grading.submissions import MAX_UNPACKED, Submission, copy_dir
@@ -32,8 +33,7 @@ class VersionMismatch(Exception):
 
 def package_version():
     import re
-    path = os.path.join(os.path.dirname(os.path.realpath(__file__)), '..', '..', '..',
-                        'package.xml')
+    path = PACKAGE_XML
     if os.environ.get(VERSION_ENV):
         return os.environ[VERSION_ENV]
     try:

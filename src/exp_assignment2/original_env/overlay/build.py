@@ -41,7 +41,13 @@ COMPILER_CACHE = (['-DCMAKE_C_COMPILER_LAUNCHER=ccache', '-DCMAKE_CXX_COMPILER_L
 
 
 class BuildFailed(Exception):
-    """The environment cannot be made: the one line to print."""
+    """The environment cannot be made: the one line to print. ``where`` (the
+    user's FILE or FILE:LINE, or None) and ``message``: the first error as
+    data, for a caller that shows it (the grader's driver sends it on)."""
+
+    def __init__(self, text, where=None, message=None):
+        Exception.__init__(self, text)
+        self.where, self.message = where, message if message is not None else text
 
 
 def log(message):
@@ -75,7 +81,8 @@ def package_names(package_dir):
         except InvalidPackage as e:
             message = str(e).split("':", 1)[-1] if str(e).startswith('Error(s) in') else str(e)
             raise BuildFailed('%s: %s' % (os.path.join(path, 'package.xml'),
-                                          build_errors.one_line(message)))
+                                          build_errors.one_line(message)),
+                              os.path.join(path, 'package.xml'), build_errors.one_line(message))
     if not names:
         raise BuildFailed('%s has no package.xml: give the directory of a catkin package'
                           % package_dir)
@@ -140,7 +147,7 @@ class Overlay:
                                   stdout=out, stderr=subprocess.STDOUT, env=env,
                                   timeout=BUILD_TIMEOUT)
         if proc.returncode != 0:
-            raise BuildFailed(self.failure())
+            raise BuildFailed(*self.failure())
         self.write_own_package(names)
         with open(self.names_path, 'w') as f:
             f.write(' '.join(names))
@@ -170,7 +177,8 @@ class Overlay:
             found = build_errors.first_error(f.read(), self.to_user,
                                              os.path.join(self.path, 'src'))
         where, message = found or (None, 'catkin_make failed')
-        return '%s%s (full log: %s)' % (where + ': ' if where else '', message, self.log_path)
+        return ('%s%s (full log: %s)' % (where + ': ' if where else '', message, self.log_path),
+                where, message)
 
     def to_user(self, path):
         """The user's path of a path in the overlay's source space, else None."""
@@ -279,7 +287,8 @@ def build(package_dir, more=(), workspace=None, root=None, environ=None):
             else:
                 overlay.build(names + more_names, stamp)
     except (BuildFailed, debian_packages.InstallFailed) as e:
-        raise BuildFailed('the build of %s failed: %s' % (package_dir, e))
+        raise BuildFailed('the build of %s failed: %s' % (package_dir, e),
+                          getattr(e, 'where', None), getattr(e, 'message', str(e)))
     except subprocess.TimeoutExpired as e:
         raise BuildFailed('the build of %s failed: %s took more than %d s'
                           % (package_dir, e.cmd[0], e.timeout))

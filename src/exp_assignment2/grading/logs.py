@@ -1,0 +1,216 @@
+"""What the grader reads in a run's logs, in one place (no ROS).
+
+* :func:`tracebacks`, :func:`python_errors`: Python's tracebacks, each once;
+* :func:`deaths`: roslaunch's ``[NODE] process has died [pid, exit code, cmd]``
+  lines, each with what the node said last: the lines of its output before
+  it, its own log (``ros_home/log/RUN/NODE.log``, and ``NODE-stdout.log``
+  for ``output="log"``), and for an abort the Qt or C++ message before it
+  (:func:`abort_message`); exit codes that are signals named
+  (:func:`exit_name`);
+* :func:`cannot_launch`: roslaunch's ``ERROR: cannot launch node of type``,
+  a node of a launch that could not be started (roslaunch runs the rest);
+* :func:`started_nothing`: the line of a command's output that says the
+  command started nothing (``RLException``, ``Resource not found``,
+  ``rosrun``'s and ``rospack``'s errors);
+* :func:`student_node_died`: the runner's look, while a run goes, for a
+  death of a student's node.
+
+Logs are read up to the size they had when the run was ended (``sizes``):
+what a node says while it is being stopped is not its crash.
+"""
+import os
+import re
+import signal
+
+READ_LIMIT = 4 * 1024 * 1024     # bytes of each log read
+# roslaunch's colours, and the terminal title it sets (ESC ] 2 ; ... BEL)
+ANSI = re.compile(r'\x1b\[[0-9;]*[A-Za-z]|\x1b\][^\x07\n]*(?:\x07|\x1b\\)')
+TAIL = 15                        # lines of a dead node's output shown
+
+DIED = re.compile(r'^\[(?P<node>[^\]]+)\] process has died \[pid \d+, exit code (?P<code>-?\d+), '
+                  r'cmd (?P<cmd>.*?)\]\.?$', re.M)
+CANNOT_LAUNCH = re.compile(
+    r'^ERROR: cannot launch node of type \[(?P<type>[^\]]+)\]: ?(?P<why>.*)$', re.M)
+STARTED_NOTHING = re.compile(r'^(RLException: .*|Resource not found: .*|\[rosrun\] .*|'
+                             r'\[rospack\] Error: .*|'
+                             r'ERROR: .*is neither a launch file.*)$', re.M)
+# what a process says before it aborts: Qt without a display, C++'s terminate,
+# glibc's checks, a failed assertion, a segmentation fault
+ABORT = re.compile(r'(qt\.qpa\.\S+: .*|.*Qt platform plugin.*|.*[Cc]annot (?:open|connect to) '
+                   r'(?:display|X server).*|terminate called .*|\s*what\(\): .*|'
+                   r'.*\*\*\* .+ \*\*\*.*|.*[Aa]ssertion .* failed.*|.*Segmentation fault.*|'
+                   r'Fatal Python error: .*|(?:free|malloc|realloc|double free)\b.*\(\).*)$')
+SIMULATOR = ('scripts/simulator.py', '/gzserver')
+QUIET_ENDINGS = ('KeyboardInterrupt', 'ROSInterruptException', 'rospy.exceptions.ROSInterrupt',
+                 'ROSTimeMovedBackwardsException')
+TRACEBACK = re.compile(r'^Traceback \(most recent call last\):')
+LOG_ARG = re.compile(r'__log:=(\S+)')
+COMMAND_LOG = re.compile(r'^logs/command-(\d+)\.log$')
+
+
+def read_log(work, rel, sizes):
+    """The log's text up to the size it had when the run was ended."""
+    path = os.path.join(work, rel)
+    limit = min(sizes.get(rel, READ_LIMIT), READ_LIMIT)
+    try:
+        with open(path, 'rb') as f:
+            return ANSI.sub('', f.read(limit).decode(errors='replace'))
+    except OSError:
+        return ''
+
+
+def run_logs(work, sizes):
+    """[(rel path, text)] of the run's logs: the commands' then the nodes'."""
+    names = sorted(sizes, key=lambda r: (not r.startswith('logs/'), r))
+    return [(rel, read_log(work, rel, sizes)) for rel in names
+            if not os.path.basename(rel).startswith(('master', 'rosout', 'roslaunch-'))]
+
+
+def command_index(rel):
+    """N of ``logs/command-N.log``, else None."""
+    match = COMMAND_LOG.match(rel or '')
+    return int(match.group(1)) if match else None
+
+
+def last_lines(text, count=TAIL):
+    lines = [l.rstrip() for l in text.splitlines() if l.strip()]
+    return lines[-count:]
+
+
+def last_line(text):
+    lines = last_lines(text, 1)
+    return lines[0].strip()[:300] if lines else ''
+
+
+def exit_name(code):
+    """``1``, ``-6 (SIGABRT)``: a negative exit code is the signal that ended it."""
+    if code is None:
+        return '?'
+    if code < 0:
+        try:
+            return '%d (%s)' % (code, signal.Signals(-code).name)
+        except ValueError:
+            pass
+    return str(code)
+
+
+def tracebacks(text, source):
+    """[{source, line, summary, excerpt}] of the Python tracebacks in a log's text."""
+    lines = text.splitlines()
+    found = []
+    for i, line in enumerate(lines):
+        if not TRACEBACK.match(line.strip()):
+            continue
+        end = i + 1
+        while end < len(lines) and (lines[end].startswith((' ', '\t')) or
+                                    lines[end].startswith('During handling')):
+            end += 1
+        summary = lines[end].strip() if end < len(lines) else 'Traceback'
+        found.append({'source': source, 'line': i + 1, 'summary': summary[:300],
+                      'excerpt': '\n'.join(lines[max(0, i - 3):end + 1])[-4000:]})
+    return found
+
+
+def python_errors(logs):
+    """The tracebacks of the logs, each once (a node's stdout and its own log repeat them)."""
+    seen, errors = set(), []
+    for rel, text in logs:
+        for error in tracebacks(text, rel):
+            if any(error['summary'].startswith(q) or q in error['summary']
+                   for q in QUIET_ENDINGS):
+                continue
+            key = error['excerpt'].split('Traceback', 1)[-1]
+            if key in seen:
+                continue
+            seen.add(key)
+            errors.append(error)
+    return errors
+
+
+def abort_message(lines):
+    """The Qt or C++ lines that say why a process aborted (the last of them,
+    up to three, in their order), or ''."""
+    found = [l.strip() for l in lines if ABORT.match(l)]
+    kept = []
+    for line in found[-3:]:
+        if line not in kept:
+            kept.append(line)
+    return '\n'.join(kept)[:600]
+
+
+def _own_logs(cmd, work, sizes):
+    """[(rel, text)] of a node's own log files (its ``__log:=`` file, and the
+    ``-stdout``/``-stderr`` files of ``output="log"``), read as the run left them."""
+    match = LOG_ARG.search(cmd)
+    if not match:
+        return []
+    path = match.group(1)
+    base = path[:-len('.log')] if path.endswith('.log') else path
+    found = []
+    for candidate in (path, base + '-stdout.log', base + '-stderr.log'):
+        rel = os.path.relpath(candidate, work) if os.path.isabs(candidate) else candidate
+        if rel.startswith('..') or rel not in sizes:
+            continue
+        text = read_log(work, rel, sizes)
+        if text.strip():
+            found.append((rel, text))
+    return found
+
+
+def death(node, code, cmd, where, output_lines, work='', sizes=None):
+    """One dead node: its exit (named), the lines of its output before its
+    death, its own log's last lines, and the abort message in either."""
+    own = _own_logs(cmd, work, sizes or {}) if work else []
+    own_lines = [l for _, text in own for l in last_lines(text, TAIL)]
+    return {'node': node, 'code': code, 'exit': exit_name(code), 'cmd': cmd[:300], 'log': where,
+            'output': '\n'.join(output_lines[-TAIL:])[-4000:],
+            'node_logs': [{'log': rel, 'tail': '\n'.join(last_lines(text))[-4000:]}
+                          for rel, text in own],
+            'abort': abort_message(output_lines[-40:] + own_lines) if code < 0 or code == 134
+            else ''}
+
+
+def deaths(logs, work='', sizes=None):
+    """[death] for every ``process has died`` line of the logs."""
+    found = []
+    for rel, text in logs:
+        lines = text.splitlines()
+        for i, line in enumerate(lines):
+            match = DIED.match(line)
+            if match:
+                before = [l for l in lines[max(0, i - 80):i] if l.strip()]
+                found.append(death(match.group('node'), int(match.group('code')),
+                                   match.group('cmd'), rel, before, work, sizes))
+    return found
+
+
+def is_simulator(death_or_cmd):
+    cmd = death_or_cmd['cmd'] if isinstance(death_or_cmd, dict) else death_or_cmd
+    return any(m in cmd for m in SIMULATOR)
+
+
+def cannot_launch(logs):
+    """[(rel, line)] of roslaunch's nodes that could not be started."""
+    return [(rel, m.group(0).strip()[:400]) for rel, text in logs
+            for m in CANNOT_LAUNCH.finditer(text)]
+
+
+def started_nothing(text):
+    """The first line of a command's output that says it started nothing, or None."""
+    match = STARTED_NOTHING.search(text)
+    return match.group(0).strip()[:300] if match else None
+
+
+def student_node_died(work):
+    """Has a node other than the simulator died with an error (the commands' logs, now)?"""
+    logs = os.path.join(work, 'logs')
+    try:
+        names = [n for n in os.listdir(logs) if n.startswith('command-')]
+    except OSError:
+        return False
+    for name in names:
+        text = read_log(work, os.path.join('logs', name), {})
+        if any(int(m.group('code')) != 0 and not is_simulator(m.group('cmd'))
+               for m in DIED.finditer(text)):
+            return True
+    return False

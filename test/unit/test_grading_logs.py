@@ -1,0 +1,135 @@
+"""What the grader reads in a run's logs (exp_assignment2.grading.logs), on hand-written
+logs in roslaunch's, Python's, Qt's and C++'s words."""
+from exp_assignment2.grading import logs
+
+ROSLAUNCH_MISSING = '''... logging to /w/ros_home/log/abc/roslaunch-host-77.log
+started roslaunch server http://localhost:40000/
+
+SUMMARY
+========
+
+NODES
+  /
+    dog (exp_assignment2/dog.py)
+    ghost (exp_assignment2/ghost.py)
+
+ERROR: cannot launch node of type [exp_assignment2/ghost.py]: Cannot locate node of type [ghost.py] in package [exp_assignment2]. Make sure file exists in package path and permission is set to executable (chmod +x)
+process[dog-2]: started with pid [90]
+'''
+
+QT_ABORT = '''process[viewer-3]: started with pid [120]
+[INFO] [1.0]: the camera is up
+qt.qpa.xcb: could not connect to display 
+qt.qpa.plugin: Could not load the Qt platform plugin "xcb" in "/usr/lib/python3/dist-packages/cv2/qt/plugins" even though it was found.
+This application failed to start because no Qt platform plugin could be initialized. Reinstalling the application may fix this problem.
+
+Available platform plugins are: xcb.
+
+[viewer-3] process has died [pid 120, exit code -6, cmd /w/src/scripts/viewer.py __name:=viewer __log:=/w/ros_home/log/abc/viewer-3.log].
+log file: /w/ros_home/log/abc/viewer-3*.log
+'''
+
+CPP_ABORT = '''process[counter-4]: started with pid [130]
+counting
+terminate called after throwing an instance of 'std::runtime_error'
+  what():  the counter has no numbers
+[counter-4] process has died [pid 130, exit code -6, cmd /w/devel/lib/p/counter __name:=counter __log:=/w/ros_home/log/abc/counter-4.log].
+'''
+
+PY_CRASH = '''process[dog-5]: started with pid [88]
+Traceback (most recent call last):
+  File "/w/src/scripts/dog.py", line 4, in <module>
+    raise RuntimeError('the dog has no legs')
+RuntimeError: the dog has no legs
+[dog-5] process has died [pid 88, exit code 1, cmd /w/src/scripts/dog.py __name:=dog __log:=/w/ros_home/log/abc/dog-5.log].
+'''
+
+
+def test_a_node_roslaunch_cannot_start_is_found_and_is_not_a_start_failure():
+    found = logs.cannot_launch([('logs/command-1.log', ROSLAUNCH_MISSING)])
+    assert found == [('logs/command-1.log', 'ERROR: cannot launch node of type '
+                      '[exp_assignment2/ghost.py]: Cannot locate node of type [ghost.py] in '
+                      'package [exp_assignment2]. Make sure file exists in package path and '
+                      'permission is set to executable (chmod +x)')]
+    assert logs.started_nothing(ROSLAUNCH_MISSING) is None
+    assert logs.deaths([('logs/command-1.log', ROSLAUNCH_MISSING)]) == []
+
+
+def test_commands_that_started_nothing():
+    for text, line in [
+            ('RLException: [x.launch] is neither a launch file in package [p] nor is [p] a '
+             'launch file name\nThe traceback for the exception was written to the log file\n',
+             'RLException: [x.launch] is neither a launch file in package [p] nor is [p] a '
+             'launch file name'),
+            ('... logging to x\nRLException: Invalid roslaunch XML syntax: mismatched tag: '
+             'line 9, column 2\n', 'RLException: Invalid roslaunch XML syntax: mismatched tag: '
+             'line 9, column 2'),
+            ("[rosrun] Couldn't find executable named ghost.py below /w/src\n",
+             "[rosrun] Couldn't find executable named ghost.py below /w/src"),
+            ("[rospack] Error: package 'nope' not found\n",
+             "[rospack] Error: package 'nope' not found"),
+            ('Resource not found: nope\nROS path [0]=/opt/ros\n', 'Resource not found: nope')]:
+        assert logs.started_nothing(text) == line
+
+
+def test_an_abort_after_qt_says_why_and_names_its_signal(tmp_path):
+    work = tmp_path / 'work'
+    own = work / 'ros_home' / 'log' / 'abc'
+    own.mkdir(parents=True)
+    (own / 'viewer-3.log').write_text('[rospy.client][INFO] init_node, name[/viewer]\n')
+    text = QT_ABORT.replace('/w/', str(work) + '/')
+    sizes = {'logs/command-0.log': len(text), 'ros_home/log/abc/viewer-3.log': 100}
+    (d,) = logs.deaths([('logs/command-0.log', text)], str(work), sizes)
+    assert (d['node'], d['code'], d['exit']) == ('viewer-3', -6, '-6 (SIGABRT)')
+    assert d['abort'].split('\n')[0] == 'qt.qpa.xcb: could not connect to display'
+    assert 'This application failed to start because no Qt platform plugin' in d['abort']
+    assert d['output'].splitlines()[0] == 'process[viewer-3]: started with pid [120]'
+    assert d['node_logs'] == [{'log': 'ros_home/log/abc/viewer-3.log',
+                               'tail': '[rospy.client][INFO] init_node, name[/viewer]'}]
+
+
+def test_a_cpp_terminate_is_the_abort_message():
+    (d,) = logs.deaths([('logs/command-0.log', CPP_ABORT)])
+    assert d['exit'] == '-6 (SIGABRT)'
+    assert d['abort'] == ("terminate called after throwing an instance of "
+                          "'std::runtime_error'\nwhat():  the counter has no numbers")
+
+
+def test_a_python_crash_has_its_traceback_and_no_abort():
+    (d,) = logs.deaths([('logs/command-0.log', PY_CRASH)])
+    assert (d['exit'], d['abort']) == ('1', '')
+    assert d['output'].splitlines()[-1] == 'RuntimeError: the dog has no legs'
+    (error,) = logs.python_errors([('logs/command-0.log', PY_CRASH)])
+    assert (error['line'], error['summary']) == (2, 'RuntimeError: the dog has no legs')
+
+
+def test_tracebacks_in_a_log_and_quiet_endings_left_out():
+    text = ('[INFO] starting\nTraceback (most recent call last):\n  File "x.py", line 3, '
+            'in <module>\n    go()\nZeroDivisionError: division by zero\n[INFO] more\n')
+    found = logs.tracebacks(text, 'logs/command-0.log')
+    assert [(e['line'], e['summary']) for e in found] == [(2, 'ZeroDivisionError: division '
+                                                              'by zero')]
+    quiet = 'Traceback (most recent call last):\n  File "x.py", line 3\nKeyboardInterrupt\n'
+    assert logs.python_errors([('a', quiet)]) == []
+    # a node's stdout and its own log say the same traceback: once
+    assert len(logs.python_errors([('a', text), ('b', text)])) == 1
+
+
+def test_colours_and_the_terminal_title_are_not_read(tmp_path):
+    (tmp_path / 'logs').mkdir()
+    (tmp_path / 'logs' / 'command-0.log').write_bytes(
+        b'\x1b]2;/w/a.launch http://localhost:11311\x07\x1b[31mERROR: red\x1b[0m\n')
+    assert logs.read_log(str(tmp_path), 'logs/command-0.log', {}) == 'ERROR: red\n'
+
+
+def test_exit_codes_named():
+    assert [logs.exit_name(c) for c in (1, -6, -11, -9, None)] == [
+        '1', '-6 (SIGABRT)', '-11 (SIGSEGV)', '-9 (SIGKILL)', '?']
+
+
+def test_the_runner_sees_a_student_death_but_not_a_missing_node(tmp_path):
+    (tmp_path / 'logs').mkdir()
+    (tmp_path / 'logs' / 'command-0.log').write_text(ROSLAUNCH_MISSING)
+    assert not logs.student_node_died(str(tmp_path))
+    (tmp_path / 'logs' / 'command-1.log').write_text(PY_CRASH)
+    assert logs.student_node_died(str(tmp_path))

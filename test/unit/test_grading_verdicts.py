@@ -1,0 +1,99 @@
+"""The verdict's rules (exp_assignment2.grading.verdicts.RULES), each alone on
+hand-made facts (a Seen), then their order: the precedence docs/grading.md states."""
+import pytest
+
+from exp_assignment2.grading import verdicts
+from exp_assignment2.grading.verdicts import RULES, Seen, decide
+
+PASSED = [{'name': 'reaches the ball', 'passed': True}]
+FAILED = [{'name': 'reaches the ball', 'passed': False}, {'name': 'head', 'passed': True}]
+SIM = {'node': 'gazebo-1', 'code': 1, 'cmd': '/r/scripts/simulator.py x', 'log': 'l'}
+DOG = {'node': 'dog-5', 'code': 1, 'cmd': '/w/dog.py', 'log': 'logs/command-0.log',
+       'abort': ''}
+QT = {'node': 'viewer-3', 'code': -6, 'cmd': '/w/viewer.py', 'log': 'logs/command-0.log',
+      'abort': 'qt.qpa.xcb: could not connect to display\nThis application failed'}
+RUNNING = dict(states=300, sim_time=30.0, duration=30.0, checks=PASSED)
+MISSING = {'command': 'roslaunch p a.launch', 'log': 'logs/command-0.log',
+           'line': 'ERROR: cannot launch node of type [p/ghost.py]: Cannot locate node'}
+
+# one case per rule, in the table's order: (rule name, facts, verdict, reason)
+CASES = [
+    ('sandbox did not start', dict(built=False, build_rc=None, ended_by='driver_exit',
+                                   sandbox_exit=1, build_log_line='bwrap: no permission'),
+     'grader_error', 'the sandbox did not start (exit 1): bwrap: no permission'),
+    ('simulator died', dict(RUNNING, died=[SIM]),
+     'grader_error', 'the simulator died (gazebo-1, exit code 1)'),
+    ('build failed', dict(build_rc=1, build_error={'file': 'src/counter.cpp', 'line': 3,
+                                                   'message': "expected ';'"}),
+     'not_built', "src/counter.cpp:3: expected ';'"),
+    ('a command started nothing', dict(started_nothing=[('roslaunch p b.launch',
+                                                         'RLException: no b.launch')]),
+     'not_started', 'roslaunch p b.launch: RLException: no b.launch'),
+    ('nothing ran, a node could not launch', dict(launch_errors=[MISSING]),
+     'not_started', 'roslaunch p a.launch: ERROR: cannot launch node of type [p/ghost.py]: '
+                    'Cannot locate node'),
+    ("the grader's processes killed from inside", dict(RUNNING, driver_ended=False,
+                                                       ended_by='driver_exit', sandbox_exit=-9),
+     'crashed', "the run's processes were killed from inside its sandbox: the grader's "
+                'driver there got a signal it was not sent by the grader (exit -9)'),
+    ('memory limit', dict(RUNNING, oom=True, memory_limit_mb=3000),
+     'crashed', 'the run used more than its 3000 MB of memory'),
+    ('disk limit', dict(RUNNING, ended_by='disk_limit'),
+     'crashed', 'the run wrote more than its disk limit'),
+    ('a node died', dict(RUNNING, died=[QT]),
+     'crashed', 'viewer-3 died (exit code -6 (SIGABRT)): qt.qpa.xcb: could not connect to '
+                'display'),
+    ('no ground truth', dict(ended_by='no_simulator'),
+     'grader_error', 'the simulator never reported its ground truth'),
+    ('build limit', dict(built=False, build_rc=None, ended_by='build_limit'),
+     'timed_out', 'the build ran past its limit'),
+    ('wall-clock limit', dict(RUNNING, sim_time=12.4, duration=60.0, ended_by='wall_limit'),
+     'timed_out', '12 of 60 simulated s within the wall-clock limit'),
+    ('a check failed', dict(RUNNING, checks=FAILED), 'failed_checks', 'failed: reaches the ball'),
+    ('every check passed', dict(RUNNING), 'passed', ''),
+]
+
+
+def test_every_rule_has_its_case_in_the_tables_order():
+    assert [c[0] for c in CASES] == [r.name for r in RULES]
+    assert {r.verdict for r in RULES} == set(verdicts.VERDICTS)
+
+
+@pytest.mark.parametrize('name,facts,verdict,reason', CASES, ids=[c[0] for c in CASES])
+def test_each_rule_alone(name, facts, verdict, reason):
+    rule = next(r for r in RULES if r.name == name)
+    seen = Seen(**facts)
+    assert rule.holds(seen)
+    assert (rule.verdict, rule.reason(seen)) == (verdict, reason)
+    # and it is the first that holds: no earlier rule takes these facts
+    assert decide(seen) == (verdict, reason)
+
+
+def test_a_python_crash_says_its_traceback():
+    seen = Seen(died=[DOG], errors=[{'source': 'logs/command-0.log', 'line': 2,
+                                     'summary': 'RuntimeError: the dog has no legs'}], **RUNNING)
+    assert decide(seen) == ('crashed', 'dog-5 died (exit code 1): RuntimeError: the dog has '
+                                       'no legs')
+
+
+def test_the_machines_fault_comes_before_the_students_crash():
+    # the simulator died and a node died: the grader's, not the student's
+    assert decide(Seen(died=[DOG, SIM], **RUNNING))[0] == 'grader_error'
+    # unless the student's code killed the sandbox's processes, or broke its memory limit
+    assert decide(Seen(died=[SIM], driver_ended=False, **dict(RUNNING, ended_by='driver_exit'))
+                  )[0] == 'crashed'
+    assert decide(Seen(died=[SIM], oom=True, **RUNNING))[0] == 'crashed'
+
+
+def test_a_node_that_could_not_start_is_no_verdict_when_the_rest_ran():
+    assert decide(Seen(launch_errors=[MISSING], **RUNNING)) == ('passed', '')
+    assert decide(Seen(launch_errors=[MISSING], **dict(RUNNING, checks=FAILED)))[0] == \
+        'failed_checks'
+
+
+def test_a_crash_before_any_ground_truth_is_the_students():
+    assert decide(Seen(died=[DOG], ended_by='node_died'))[0] == 'crashed'
+
+
+def test_a_zero_exit_is_no_death():
+    assert decide(Seen(died=[dict(DOG, code=0)], **RUNNING)) == ('passed', '')
