@@ -18,6 +18,10 @@ MISSING = {'command': 'roslaunch p a.launch', 'log': 'logs/command-0.log',
 
 # one case per rule, in the table's order: (rule name, facts, verdict, reason)
 CASES = [
+    ('no display', dict(built=False, build_rc=None, ended_by='driver_exit',
+                        display_error='Xvfb could not start: No such file or directory'),
+     'grader_error', "the run's display could not be made: Xvfb could not start: No such "
+                     'file or directory'),
     ('sandbox did not start', dict(built=False, build_rc=None, ended_by='driver_exit',
                                    sandbox_exit=1, build_log_line='bwrap: no permission'),
      'grader_error', 'the sandbox did not start (exit 1): bwrap: no permission'),

@@ -137,7 +137,6 @@ class Run(object):
             truth = TruthServer(os.path.join(self.sockets, 'truth.sock'), self.record,
                                 may_write=box.may_write)
             self._monitor(box, truth, self._plan(package_dir), rtf, result)
-            self._display_failed(result)
         except SandboxError as exc:
             result.update(verdict='grader_error', reason=str(exc))
         return self._finish(result)
@@ -232,14 +231,6 @@ class Run(object):
         built = next((e for e in events if e.get('event') == 'built'), None)
         if built is not None:
             result['build'] = {'rc': built.get('rc'), 'error': built.get('error')}
-
-    @staticmethod
-    def _display_failed(result):
-        """A run whose display could not be made ran nothing: the grader's fault."""
-        for event in result.get('events') or []:
-            if event.get('event') == 'display' and event.get('error'):
-                result.update(verdict='grader_error',
-                              reason='the run\'s display could not be made: %s' % event['error'])
 
     @staticmethod
     def _all_exited(events):

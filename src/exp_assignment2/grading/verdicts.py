@@ -6,6 +6,7 @@ ground truth); the verdict is the first rule of :data:`RULES` that holds,
 as the CARLA leaderboard's ``FAILURE_MESSAGES`` table. The table's order is
 the precedence (docs/grading.md, "Verdicts", lists it row by row):
 
+0. ``grader_error``: the run's display could not be made (nothing of the student's ran);
 1. ``grader_error``: the sandbox did not start (the driver never said the build's end);
 2. ``grader_error``: the simulator died, with no memory limit broken and no
    grader's process killed from inside the sandbox (either would be the
@@ -50,7 +51,9 @@ class Seen(object):
     def __init__(self, built=True, build_rc=0, build_error=None, build_log_line='',
                  ended_by='duration', sandbox_exit=0, driver_ended=True, oom=False,
                  states=0, sim_time=0.0, duration=200.0, memory_limit_mb=0, died=(),
-                 errors=(), started_nothing=(), launch_errors=(), checks=None):
+                 errors=(), started_nothing=(), launch_errors=(), checks=None,
+                 display_error=None):
+        self.display_error = display_error       # the driver's, when it made no display
         self.built, self.build_rc, self.build_error = built, build_rc, build_error
         self.build_log_line = build_log_line
         self.ended_by, self.sandbox_exit, self.driver_ended = ended_by, sandbox_exit, driver_ended
@@ -117,6 +120,8 @@ def _failed_names(s):
 
 
 RULES = (
+    Rule('grader_error', 'no display', lambda s: bool(s.display_error),
+         lambda s: 'the run\'s display could not be made: %s' % s.display_error),
     Rule('grader_error', 'sandbox did not start',
          lambda s: not s.built and s.ended_by != 'build_limit',
          lambda s: 'the sandbox did not start (exit %s)%s' % (
@@ -201,7 +206,9 @@ def gather(work, record_dir, result, profile):
                 sim_time=(result.get('truth') or {}).get('sim_time') or 0.0,
                 duration=float(result.get('duration') or profile['duration']),
                 memory_limit_mb=profile['memory_limit_mb'],
-                errors=logs_.python_errors(run_logs))
+                errors=logs_.python_errors(run_logs),
+                display_error=next((e['error'] for e in events if e.get('event') == 'display'
+                                    and e.get('error')), None))
     if not seen.ran:
         return seen
     seen.died = logs_.deaths(run_logs, work, sizes)
