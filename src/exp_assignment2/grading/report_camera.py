@@ -25,7 +25,8 @@ def window_pictures(label, runs_dir, img_dir, record, times):
     moments = dict(times) if clock else {}
     moments = moments or {'last picture': None}
     rows = []
-    for i, (window, chosen) in enumerate(windows.shown_at(shown['windows'], clock, moments)):
+    for i, (window, chosen) in enumerate(windows.shown_at(shown['windows'], clock, moments,
+                                                             period=shown['period'] or 1.0)):
         copied = {}
         for moment, source in chosen.items():
             copied[moment] = None

@@ -221,12 +221,22 @@ def sim_time(clock, wall):
     return s0 if w1 == w0 else s0 + (s1 - s0) * (wall - w0) / (w1 - w0)
 
 
-def shown_at(windows, clock, moments, slack=1.0):
+def pace(clock):
+    """Simulated s per wall s over the clock (1.0 without one)."""
+    if len(clock) < 2 or clock[-1][0] <= clock[0][0] or clock[-1][1] <= clock[0][1]:
+        return 1.0
+    return (clock[-1][1] - clock[0][1]) / (clock[-1][0] - clock[0][0])
+
+
+def shown_at(windows, clock, moments, period=1.0):
     """[(window, {moment: picture path or None})]: at each moment (simulated
-    s), the picture of each window taken last before it (within ``slack``
-    simulated s after it: a picture is taken once per period). A picture is
-    kept only when it changed, so the last one before is what it showed. A
-    moment of None (a run without a clock) takes the last picture."""
+    s), the picture of each window taken last before it, or within one
+    capture ``period`` (wall s, in simulated s at the run's pace) after it: a
+    picture is taken once a period, so that one is the first that could show
+    the moment. A picture is kept only when it changed, so the last one
+    before is what the window showed. A moment of None (a run without a
+    clock) takes the last picture."""
+    slack = period * pace(clock)
     out = []
     for window in windows:
         timed = [(sim_time(clock, p['wall']), p['path']) for p in window['pictures']]
@@ -245,6 +255,8 @@ def shown_at(windows, clock, moments, slack=1.0):
 def limit_notes(windows):
     """What the limits cost, for the page, in a teacher's words."""
     notes, limits = [], windows.get('limits') or {}
+    notes.append('a picture of each window every %g wall s while it changes; each moment '
+                 'shows the last one taken up to one of those after it' % (windows['period'] or 1))
     if windows['left_out_count']:
         notes.append('%d more windows opened and were not captured (at most %d a run): %s' % (
             windows['left_out_count'], limits.get('windows', MAX_WINDOWS),
