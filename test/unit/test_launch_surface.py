@@ -284,3 +284,16 @@ def test_the_packages_are_installed_executable_once_per_content(tmp_path):
     assert second != first and os.path.isdir(first)     # a running shell keeps its copy
     assert sorted(os.listdir(str(ws / 'original_env_packages'))) == sorted(
         [os.path.basename(first), os.path.basename(second)])    # no scratch left behind
+
+
+def test_a_viewer_nobody_watches_draws_at_the_rate_asked():
+    """The grader's display is captured once a wall second: gzclient's rviz is
+    asked to draw twice a second there, not at its config's 15."""
+    from exp_assignment2.launch_surface.viewer import FRAME_RATE_ENV, frame_rate, \
+        with_frame_rate
+    assert frame_rate({}) is None
+    assert frame_rate({FRAME_RATE_ENV: '2'}) == 2.0
+    for bad in ('nan', '0', '-3', '500', 'fast'):
+        assert frame_rate({FRAME_RATE_ENV: bad}) is None, bad
+    config = 'Visualization Manager:\n  Global Options:\n    Frame Rate: 15\n  Value: true\n'
+    assert with_frame_rate(config, 2) == config.replace('Frame Rate: 15', 'Frame Rate: 2')

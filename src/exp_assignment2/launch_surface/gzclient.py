@@ -35,7 +35,8 @@ MARKERS = '/gazebo_gui/robot_markers'
 class FrameBroadcaster(object):
     """Model and link states -> TF frames under ``world``, rate-limited."""
 
-    def __init__(self):
+    def __init__(self, period=PERIOD):
+        self.period = period
         self.tf = tf2_ros.TransformBroadcaster()
         self.last = {}
         rospy.Subscriber('/gazebo/model_states', ModelStates, self.on_states, 'models',
@@ -45,7 +46,7 @@ class FrameBroadcaster(object):
 
     def on_states(self, msg, which):
         now = time.monotonic()
-        if now - self.last.get(which, 0.0) < PERIOD:
+        if now - self.last.get(which, 0.0) < self.period:
             return
         self.last[which] = now
         stamp = rospy.Time.now()
@@ -100,6 +101,21 @@ class RobotDrawer(object):
         self.pub.publish(MarkerArray(markers=markers))
 
 
+def _config(environ):
+    """The rviz config: the package's, or a copy drawing at the frame rate
+    the environment asks for (a display nobody watches live)."""
+    rate = viewer.frame_rate(environ)
+    if rate is None:
+        return CONFIG
+    import tempfile
+    with open(CONFIG) as f:
+        text = viewer.with_frame_rate(f.read(), rate)
+    handle, path = tempfile.mkstemp(prefix='gzclient-', suffix='.rviz')
+    with os.fdopen(handle, 'w') as f:
+        f.write(text)
+    return path
+
+
 def main():
     """The gzclient executable (Gazebo's client options are accepted and unused)."""
     stop = Stop()
@@ -111,11 +127,13 @@ def main():
         stop.wait()
         rospy.signal_shutdown('gzclient stopped')
         return 0
-    FrameBroadcaster()
+    rate = viewer.frame_rate(os.environ)     # no more frames than the window draws
+    FrameBroadcaster(PERIOD if rate is None else max(PERIOD, 1.0 / rate))
     RobotDrawer()
     name = rospy.get_name().rsplit('/', 1)[-1] + '_rviz'
-    rviz = subprocess.Popen(['rviz', '-d', CONFIG, '__name:=' + name])
-    rospy.loginfo('gzclient: rviz on display %s (%s)', display, CONFIG)
+    config = _config(os.environ)
+    rviz = subprocess.Popen(['rviz', '-d', config, '__name:=' + name])
+    rospy.loginfo('gzclient: rviz on display %s (%s)', display, config)
     closed = threading.Event()
     threading.Thread(target=lambda: (rviz.wait(), closed.set()), daemon=True).start()
     if stop.wait(closed):       # the window was closed, or rviz could not start
