@@ -6,28 +6,28 @@ ground truth); the verdict is the first rule of :data:`RULES` that holds,
 as the CARLA leaderboard's ``FAILURE_MESSAGES`` table. The table's order is
 the precedence (docs/grading.md, "Verdicts", lists it row by row):
 
-0. ``grader_error``: the run's display could not be made (nothing of the student's ran);
-1. ``grader_error``: the sandbox did not start (the driver never said the build's end);
-2. ``grader_error``: the simulator died, with no memory limit broken and no
+1. ``grader_error``: the run's display could not be made (nothing of the student's ran);
+2. ``grader_error``: the sandbox did not start (the driver never said the build's end);
+3. ``grader_error``: the simulator died, with no memory limit broken and no
    grader's process killed from inside the sandbox (either would be the
    student's code's doing);
-3. ``not_built``: the submission does not unpack, or catkin fails (its first error);
-4. ``not_started``: a start command started nothing (``RLException``, a launch
+4. ``not_built``: the submission does not unpack, or catkin fails (its first error);
+5. ``not_started``: a start command started nothing (``RLException``, a launch
    file that does not parse, ``rosrun`` of a missing node or package, no such
    program);
-5. ``not_started``: the simulator never reported, and a node of a launch could
+6. ``not_started``: the simulator never reported, and a node of a launch could
    not be started (its roslaunch's ``cannot launch node`` line);
-6. ``crashed``: the grader's driver in the sandbox was killed from inside it;
-7. ``crashed``: the run used more memory than its limit;
-8. ``crashed``: the run wrote more than its disk limit;
-9. ``crashed``: a node of the student's died before the end (which, its exit
+7. ``crashed``: the grader's driver in the sandbox was killed from inside it;
+8. ``crashed``: the run used more memory than its limit;
+9. ``crashed``: the run wrote more than its disk limit;
+10. ``crashed``: a node of the student's died before the end (which, its exit
    code named, its traceback or the Qt/C++ message of its abort);
-10. ``grader_error``: the simulator never reported its ground truth;
-11. ``timed_out``: the build ran past its limit;
-12. ``timed_out``: the run did not reach its simulated duration within its
+11. ``grader_error``: the simulator never reported its ground truth;
+12. ``timed_out``: the build ran past its limit;
+13. ``timed_out``: the run did not reach its simulated duration within its
     wall-clock limit;
-13. ``failed_checks``: some check of the profile failed;
-14. ``passed``.
+14. ``failed_checks``: some check of the profile failed;
+15. ``passed``.
 
 A node of a launch that cannot be started is not a verdict by itself
 (roslaunch starts the rest, and so the student saw it run): it is kept in
