@@ -217,17 +217,23 @@ def test_launch_files_are_read_by_roslaunch_in_a_sandbox(tmp_path):
         'launch/world.launch': LAUNCH.format(marker=marker),
         'launch/eval.launch': EVAL.format(marker=marker),
         'launch/inner.launch': '<launch><node name="gazebo" pkg="gazebo_ros" type="gzserver"/>'
-                               '</launch>'})
+                               '</launch>',
+        # what the reader may do: its capabilities, in its node's name
+        'launch/caps.launch': ("<launch><node name=\"$(eval 'c' + open('/proc/self/status')"
+                               ".read().split('CapEff:')[1].split()[0])\" pkg='x' type='y'/>"
+                               "</launch>")})
     got = launch_nodes.read({'launches': [
         {'key': '0', 'package': 'my_pkg', 'file': 'world.launch', 'args': []},
         {'key': '1', 'package': 'my_pkg', 'file': 'none.launch'},
-        {'key': '2', 'package': 'my_pkg', 'file': 'eval.launch'}],
+        {'key': '2', 'package': 'my_pkg', 'file': 'eval.launch'},
+        {'key': '3', 'package': 'my_pkg', 'file': 'caps.launch'}],
         'packages': {'my_pkg': root, 'assignment2': root}}, shown=[root],
         hidden=[str(marker.parent)])
     assert got['0'] == {'nodes': ['/gazebo', '/robot/dog']}
     assert got['1']['error'].startswith('OSError: my_pkg has no none.launch')
     assert got['2'] == {'nodes': ['/x']}    # its eval ran in the sandbox: what it wrote is gone
     assert os.listdir(str(marker.parent)) == []      # nothing it ran wrote here
+    assert got['3'] == {'nodes': ['/c0000000000000000']}     # no capability (bwrap keeps root's)
 
 
 def test_the_plan_reads_an_archive_on_the_teachers_side(tmp_path, monkeypatch):
