@@ -27,10 +27,14 @@ import os
 import subprocess
 import sys
 
-HERE = os.path.dirname(os.path.realpath(__file__))
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
-STAND_INS = (os.path.join(REPO, 'src', 'exp_assignment2', 'original_env', 'stand_in_packages'),
-             os.path.join(REPO, 'tools', 'stand_ins'))
+
+
+def _stand_ins():
+    """The folders of stand-in packages (the teacher's side only: the sandbox's
+    side runs as a script, without this package on its path)."""
+    from exp_assignment2.grading.paths import REPO
+    return (os.path.join(REPO, 'src', 'exp_assignment2', 'original_env', 'stand_in_packages'),
+            os.path.join(REPO, 'tools', 'stand_ins'))
 TIMEOUT = 60.0        # wall s to read one submission's launch files
 SANDBOX_USER = 1000   # as a run's sandbox (grading/sandbox.py); not imported: the
                       # sandbox's side of this file runs with the standard library only
@@ -41,7 +45,7 @@ def provided_packages():
     stand-ins, this repository, Debian's ROS); read on the teacher's side, no
     student file involved."""
     names = {'exp_assignment2'}
-    for folder in STAND_INS:
+    for folder in _stand_ins():
         names.update(n for n in os.listdir(folder)
                      if os.path.isfile(os.path.join(folder, n, 'package.xml')))
     try:
@@ -59,6 +63,7 @@ def read(request, shown=(), hidden=(), timeout=TIMEOUT):
     if not request.get('launches'):
         return {}
     import shutil
+    from exp_assignment2.grading.paths import REPO
     bwrap = shutil.which('bwrap')
     if not bwrap:
         return _all_failed(request, 'not read: bubblewrap (bwrap) is not installed')
@@ -74,7 +79,7 @@ def read(request, shown=(), hidden=(), timeout=TIMEOUT):
         if os.path.isdir(path):
             args += ['--ro-bind', path, path]
     env = {'PATH': '/usr/bin:/bin', 'HOME': '/tmp', 'ROS_HOME': '/tmp/ros', 'LANG': 'C.UTF-8',
-           'ROS_PACKAGE_PATH': ':'.join(list(STAND_INS) + [REPO, '/usr/share'])}
+           'ROS_PACKAGE_PATH': ':'.join(list(_stand_ins()) + [REPO, '/usr/share'])}
     args += ['--chdir', '/tmp', '--clearenv']
     for key, value in sorted(env.items()):
         args += ['--setenv', key, value]

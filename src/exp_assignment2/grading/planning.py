@@ -22,6 +22,7 @@ from exp_assignment2.grading import launch_nodes, profiles
 from exp_assignment2.grading.choose import Context, choose, own_has
 from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, \
     readme_entries
+from exp_assignment2.grading.paths import REPO
 from exp_assignment2.grading.spec import RunSpec, settings
 from exp_assignment2.grading.submissions import SubmissionError, discover, package_name, \
     unpack
@@ -51,7 +52,7 @@ def resolve(package_dir, package, name, teacher, profile, provided, read_launche
     else:
         entries, readme = readme_entries(package_dir)
         ctx = Context(package, package_dir, provided, world=bool(profile['world_commands']))
-        packages = {package: package_dir, sim_name(package): launch_nodes.REPO}
+        packages = {package: package_dir, sim_name(package): REPO}
         for entry in entries:       # $(find NAME) for the name the README gives it too
             words = entry['command'].split()
             if entry['kind'] == 'ros' and len(words) > 2 and words[1] not in provided \
