@@ -88,15 +88,20 @@ def test_each_moment_takes_the_picture_shown_last_before_it():
     clock = [(100.0, 0.0), (200.0, 100.0)]          # real time
     window = {'title': 'camera', 'pictures': [{'path': 'a', 'wall': 110.0},
                                               {'path': 'b', 'wall': 150.0}]}
-    [(_, chosen)] = windows.shown_at([window], clock, {'early': 5.0, 'first': 10.5,
-                                                       'middle': 40.0, 'end': 100.0,
-                                                       'no clock': None})
-    assert chosen == {'early': None, 'first': 'a', 'middle': 'a', 'end': 'b', 'no clock': 'b'}
+    [(_, chosen, opened)] = windows.shown_at([window], clock, {'early': 5.0, 'first': 10.5,
+                                                               'middle': 40.0, 'end': 100.0,
+                                                               'no clock': None})
+    # 'early' came before the window opened: its first picture, and when that was
+    assert chosen == {'early': 'a', 'first': 'a', 'middle': 'a', 'end': 'b', 'no clock': 'b'}
+    assert opened == {'early': 10.0}
     # at twice real time a period of 1 wall s is 2 simulated s: a picture 1.5 s
     # after the moment is the first that could show it
     fast = [(100.0, 0.0), (150.0, 100.0)]
-    [(_, chosen)] = windows.shown_at([window], fast, {'before': 18.5, 'long before': 17.0})
-    assert chosen == {'before': 'a', 'long before': None}
+    [(_, chosen, opened)] = windows.shown_at([window], fast, {'before': 18.5,
+                                                              'long before': 17.0})
+    assert chosen == {'before': 'a', 'long before': 'a'} and opened == {'long before': 20.0}
+    [(_, chosen, opened)] = windows.shown_at([dict(window, pictures=[])], clock, {'end': 9.0})
+    assert chosen == {'end': None} and opened == {}
     assert windows.pace(fast) == 2.0 and windows.pace([]) == 1.0
 
 

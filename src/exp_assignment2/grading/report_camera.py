@@ -16,7 +16,8 @@ def _e(text):
 def window_pictures(label, runs_dir, img_dir, record, times):
     """What the run's own windows showed at the camera's moments (``times``:
     {moment: simulated s}; the last picture without them), copied next to the
-    page: {'moments', 'rows': [(title, {moment: picture or None})], 'notes'};
+    page: {'moments', 'rows': [(title, {moment: picture or None}, {moment: when
+    the window opened, for a moment before it})], 'notes'};
     None without a window."""
     shown = windows.read_windows(os.path.join(runs_dir, label, 'work', 'display'))
     if not shown or not (shown['windows'] or shown['left_out_count'] or shown['notes']):
@@ -25,8 +26,8 @@ def window_pictures(label, runs_dir, img_dir, record, times):
     moments = dict(times) if clock else {}
     moments = moments or {'last picture': None}
     rows = []
-    for i, (window, chosen) in enumerate(windows.shown_at(shown['windows'], clock, moments,
-                                                             period=shown['period'] or 1.0)):
+    for i, (window, chosen, opened) in enumerate(windows.shown_at(
+            shown['windows'], clock, moments, period=shown['period'] or 1.0)):
         copied = {}
         for moment, source in chosen.items():
             copied[moment] = None
@@ -34,7 +35,7 @@ def window_pictures(label, runs_dir, img_dir, record, times):
                 copied[moment] = os.path.join(img_dir, '%s_window%d_%s.jpg' % (
                     label, i, moment.replace(' ', '_')))
                 shutil.copy(source, copied[moment])
-        rows.append((window['title'], copied))
+        rows.append((window['title'], copied, opened))
     return {'moments': list(moments), 'rows': rows, 'notes': windows.limit_notes(shown)}
 
 
@@ -48,16 +49,20 @@ def camera_section(pictures, rel):
     rows = (shown or {}).get('rows', [])
     parts = ['<h2>Camera and windows</h2><table class="frames"><tr><th></th>%s%s</tr>' % (
         '<th>the robot\'s camera</th>' if frames else '',
-        ''.join('<th>window &ldquo;%s&rdquo;</th>' % _e(title) for title, _ in rows))]
+        ''.join('<th>window &ldquo;%s&rdquo;</th>' % _e(title) for title, _, _ in rows))]
     for m in moments:
         parts.append('<tr><th>%s</th>' % _e(m))
         if frames:
             parts.append('<td><img src="%s" alt="camera at %s"></td>' % (rel(frames[m]), _e(m))
                          if m in frames else '<td></td>')
-        for title, chosen in rows:
-            parts.append('<td><a href="%s"><img class="window" src="%s" alt="%s at %s"></a></td>'
-                         % (rel(chosen[m]), rel(chosen[m]), _e(title), _e(m)) if chosen.get(m)
-                         else '<td>not open yet</td>')
+        for title, chosen, opened in rows:
+            if not chosen.get(m):
+                parts.append('<td>not open yet</td>')
+                continue
+            parts.append('<td><a href="%s"><img class="window" src="%s" alt="%s at %s"></a>%s</td>'
+                         % (rel(chosen[m]), rel(chosen[m]), _e(title), _e(m),
+                            '<br>opened after this moment: its first picture, at %.1f s' % opened[m]
+                            if m in opened else ''))
         parts.append('</tr>')
     parts.append('</table>')
     parts += ['<p>windows: %s</p>' % _e(note) for note in (shown or {}).get('notes', [])]

@@ -229,26 +229,31 @@ def pace(clock):
 
 
 def shown_at(windows, clock, moments, period=1.0):
-    """[(window, {moment: picture path or None})]: at each moment (simulated
-    s), the picture of each window taken last before it, or within one
-    capture ``period`` (wall s, in simulated s at the run's pace) after it: a
-    picture is taken once a period, so that one is the first that could show
-    the moment. A picture is kept only when it changed, so the last one
-    before is what the window showed. A moment of None (a run without a
-    clock) takes the last picture."""
+    """[(window, {moment: picture path or None}, {moment: simulated s})]: at
+    each moment (simulated s), the picture of each window taken last before
+    it, or within one capture ``period`` (wall s, in simulated s at the run's
+    pace) after it: a picture is taken once a period, so that one is the first
+    that could show the moment. A picture is kept only when it changed, so
+    the last one before is what the window showed. A moment that came before
+    the window opened (a node opens its window with its first image, and Qt
+    takes a moment) takes the window's first picture, and the third mapping
+    says when that was. A moment of None (a run without a clock) takes the
+    last picture."""
     slack = period * pace(clock)
     out = []
     for window in windows:
         timed = [(sim_time(clock, p['wall']), p['path']) for p in window['pictures']]
         timed = [(t, path) for t, path in timed if t is not None]
-        chosen = {}
+        chosen, opened = {}, {}
         for moment, t in moments.items():
             if t is None:
                 chosen[moment] = window['pictures'][-1]['path'] if window['pictures'] else None
                 continue
             before = [path for s, path in timed if s <= t + slack]
             chosen[moment] = before[-1] if before else None
-        out.append((window, chosen))
+            if not before and timed:
+                chosen[moment], opened[moment] = timed[0][1], timed[0][0]
+        out.append((window, chosen, opened))
     return out
 
 
