@@ -274,9 +274,10 @@ def limit_notes(windows):
     for window in windows['windows']:
         size = 'x'.join(str(n) for n in window['size'] or [])
         if window['cut']:
+            read, side = limits.get('read', MAX_READ), limits.get('side', MAX_SIDE)
             notes.append('"%s" (%s px): only its top-left %d x %d px part was read%s' % (
-                window['title'], size, limits.get('read', MAX_READ), limits.get('read', MAX_READ),
-                ', scaled down to %d px' % limits.get('side', MAX_SIDE) if window['scaled'] else ''))
+                window['title'], size, read, read,
+                ', scaled down to %d px' % side if window['scaled'] else ''))
         elif window['scaled']:
             notes.append('"%s" (%s px): shown scaled down to %d px' % (
                 window['title'], size, limits.get('side', MAX_SIDE)))
