@@ -4,6 +4,7 @@ every submission of a folder built, run in its sandbox and judged; one report.
     grade SUBMISSIONS [--out DIR] [--jobs K] [--duration S] [--repeat R]
           [--profile dog|miro|FILE] [--real-time-factor F] [--seed N]
           [--only NAME ...] [--scheduler tcp://HOST:PORT] [--report-only]
+          [--template DIR ...] [--base-share F] [--similarity-only]
 """
 import argparse
 import multiprocessing
@@ -50,7 +51,10 @@ def parse_args(argv):
                         ' instead of this machine alone')
     parser.add_argument('--report-only', action='store_true',
                         help='make the report again from the runs already in --out')
+    add_similarity_args(parser)
     args = parser.parse_args(argv)
+    if not 0 < args.base_share <= 1:
+        parser.error('--base-share: %r is not a share in (0, 1]' % args.base_share)
     for name in ('jobs', 'repeat'):
         value = getattr(args, name)
         if value is not None and not 1 <= value <= 64:
@@ -130,6 +134,8 @@ def main(argv=None):
     log = lambda text: print('[grade] ' + text, file=sys.stderr, flush=True)  # noqa: E731
     try:
         # the profile by the one precedence: --profile, grading.yaml's, dog
+        if args.similarity_only:
+            return similarity_step(args, out, log)
         profile = planning.read_settings(args)[1]['profile']
         if args.report_only:
             summaries = report.write(out, profile)
@@ -172,6 +178,39 @@ def main(argv=None):
         cluster.close()
     summaries = report.write(out, profile)
     log(summary_line(summaries, out))
+    similarity_step(args, out, log)
+    return EXIT_OK
+
+
+def add_similarity_args(parser):
+    """The similarity report's options (issue 42; docs/grading.md)."""
+    parser.add_argument('--template', action='append', metavar='DIR',
+                        help='code every student started from, never counted as shared '
+                        '(repeatable; default: grading.yaml\'s template: list)')
+    parser.add_argument('--base-share', type=float, default=0.1, metavar='F',
+                        help='a passage in more than max(3, F x the class) submissions is '
+                        'base code, never counted (default 0.1)')
+    parser.add_argument('--similarity-only', action='store_true',
+                        help='only the similarity report: nothing built or run')
+
+
+def similarity_step(args, out, log):
+    """The similarity report into ``out``; never changes a verdict or a score."""
+    from exp_assignment2.grading import similarity_run
+    folder = os.path.abspath(args.submissions)
+    try:
+        if out == folder or out.startswith(folder + os.sep):
+            raise SubmissionError('--out %s is inside the submissions folder, which is only '
+                                  'ever read: choose another' % out)
+        teacher = planning.read_settings(args)[0]
+        templates = similarity_run.templates_of(args, teacher, folder)
+        similarity_run.run(folder, out, templates, args.base_share, args.only, log)
+    except ImportError as exc:      # copydetect: tools/run grade installs it
+        log('similarity: not made: %s' % exc)
+        return EXIT_USAGE
+    except (TeacherFileError, SubmissionError, profiles.ProfileError) as exc:
+        log('similarity: %s' % exc)
+        return EXIT_USAGE
     return EXIT_OK
 
 

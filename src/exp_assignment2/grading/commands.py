@@ -30,7 +30,8 @@ IN_SCRIPT = re.compile(r'\b(?:roslaunch|rosrun)\s+[^`\n;|&"\']+')
 PLACEHOLDER = re.compile(r'[<>{}\[\]]|\.\.\.|\bYOUR_|\bpackage_name\b', re.IGNORECASE)
 
 TOP_KEYS = {'profile': str, 'duration': (int, float), 'commands': list, 'delay': (int, float),
-            'real_time_factor': (int, float), 'submissions': dict, 'with': list}
+            'real_time_factor': (int, float), 'submissions': dict, 'with': list,
+            'template': (list, str)}     # the similarity report's (similarity_run.py)
 ONE_KEYS = {'commands': list, 'skip': bool}
 
 
