@@ -140,7 +140,7 @@ def make_synthetic(dest, count, seed=1):
             core = disguise(previous, rng)
         previous = core
         _write(root, 'scripts/core.py', core)
-        _write(root, 'scripts/own.py', independent_code(rng, functions=8))
+        _write(root, 'scripts/own.py', independent_code(rng, functions=30))   # ~300 lines
         _write(root, 'scripts/lab_utils.py', COURSE_FILE)
     return template, folder
 
