@@ -211,6 +211,9 @@ def similarity_step(args, out, log):
     except (TeacherFileError, SubmissionError, profiles.ProfileError) as exc:
         log('similarity: %s' % exc)
         return EXIT_USAGE
+    except Exception as exc:    # noqa: B902 -- the grades are written: a report's fault ends here
+        log('similarity: failed: %s: %s' % (type(exc).__name__, exc))
+        return 1
     return EXIT_OK
 
 
