@@ -49,7 +49,7 @@ def histogram_svg(counts, pair_count):
     """An SVG histogram (log-scaled heights, so that one outlier shows beside thousands)."""
     import math
     width, height, left, bottom = 640, 220, 40, 30
-    bar = (width - left - 10) / float(len(counts))
+    bar = (width - left - 25) / float(len(counts))     # room for the last label
     top = math.log10(max(counts) + 1) or 1
     parts = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" '
              'font-family="sans-serif" font-size="11">' % (width, height),
