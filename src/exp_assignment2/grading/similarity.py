@@ -135,8 +135,8 @@ def _coverage(fp, hashes):
 
 class Result(object):
     """What ``compare`` found: ``pairs`` [(share, shared, a, b)] best first,
-    ``base`` {fingerprint: (carriers, submission name, file, filtered
-    passage)} and the settings used."""
+    ``base`` {fingerprint: (carriers, submission name, file, the
+    passage's text)} and the settings used."""
 
     def __init__(self, submissions, pairs, base, base_limit, template_count):
         self.submissions = submissions
@@ -192,16 +192,29 @@ def compare(submissions, template_hashes=(), base_limit=None):
 
 
 def _describe_base(submissions, base):
-    """{fingerprint: (carriers, submission, file, filtered text)}: where a
+    """{fingerprint: (carriers, submission, file, its text)}: where a
     base passage is seen first, for the report's list of what was left out."""
     out = {}
     for sub in submissions:
         for rel, fp in sorted(sub.files.items()):
             for h in fp.hashes & set(base):
                 if h not in out:
-                    start = fp.hash_idx[h][0]
-                    out[h] = (base[h], sub.name, rel, fp.filtered_code[start:start + fp.k])
+                    start = int(fp.hash_idx[h][0])
+                    raw_start, raw_end = raw_range(fp, start, start + fp.k)
+                    out[h] = (base[h], sub.name, rel, fp.raw_code[raw_start:raw_end])
     return out
+
+
+def raw_range(fp, start, end):
+    """(start, end) in the file's own text of filtered characters start..end
+    (copydetect's own mapping, as in its ``compare_files``)."""
+    offsets = fp.offsets
+    if len(offsets) == 0:
+        return start, end
+    import numpy as np
+    at = np.clip(np.searchsorted(offsets[:, 0], [start, end]), 0, offsets.shape[0] - 1)
+    shift = offsets[:, 1][at]
+    return int(start + shift[0]), int(end + shift[1])
 
 
 def template_hashes(roots):

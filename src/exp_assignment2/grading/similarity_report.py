@@ -85,15 +85,28 @@ def _highlighted(text, ranges):
     return ''.join(out)
 
 
-def _base_groups(result):
-    """[(file, passages, most carriers, [example texts])] of the base code, by file."""
+def _base_groups(result, shown=3, longest=600):
+    """[(file, passages, most carriers, [texts])] of the base code, by file:
+    the texts are the file's base passages merged where they touch (a
+    fingerprint alone covers 25 token characters: too little to read)."""
     groups = collections.defaultdict(list)
-    for carriers, _, rel, text in result.base.values():
-        groups[rel].append((carriers, text))
+    for h, (carriers, name, rel, _) in result.base.items():
+        groups[(rel, name)].append((carriers, h))
+    subs = {s.name: s for s in result.submissions}
     out = []
-    for rel, items in sorted(groups.items(), key=lambda kv: -len(kv[1])):
-        items.sort(key=lambda item: -item[0])
-        out.append((rel, len(items), items[0][0], [t for _, t in items[:3]]))
+    for (rel, name), items in sorted(groups.items(), key=lambda kv: -len(kv[1])):
+        fp = subs[name].files[rel]
+        ranges = sorted(similarity.raw_range(fp, int(i), int(i) + fp.k)
+                        for _, h in items for i in fp.hash_idx.get(h, ()))
+        merged = []
+        for start, end in ranges:
+            if merged and start <= merged[-1][1]:
+                merged[-1][1] = max(merged[-1][1], end)
+            else:
+                merged.append([start, end])
+        merged.sort(key=lambda r: r[0] - r[1])
+        texts = [fp.raw_code[a:min(b, a + longest)] for a, b in merged[:shown]]
+        out.append((rel, len(items), max(c for c, _ in items), texts))
     return out
 
 
@@ -110,7 +123,7 @@ def to_json(result, templates):
                         for s in result.submissions],
         'pairs': [{'a': a, 'b': b, 'share': round(float(share), 4), 'shared': int(shared)}
                   for share, shared, a, b in result.pairs],
-        'base_code': [{'file': rel, 'carriers': int(carriers), 'first_in': name, 'tokens': text}
+        'base_code': [{'file': rel, 'carriers': int(carriers), 'first_in': name, 'text': text}
                       for carriers, name, rel, text in sorted(result.base.values())]}
 
 
@@ -142,7 +155,7 @@ def page(result, templates):
                 result.base_limit, len(result.base)),
              '<p><img src="similarity-histogram.svg" alt="histogram of all pairs"></p>',
              '<h2>Pairs, most shared first</h2><table><thead><tr><th>#</th><th>pair</th>'
-             '<th>shared, of the smaller</th><th>shared tokens</th></tr></thead><tbody>']
+             '<th>shared, of the smaller</th><th>shared (token characters)</th></tr></thead><tbody>']
     for rank, (share, shared, a, b) in enumerate(pairs[:LISTED], 1):
         name = '%s and %s' % (_e(a), _e(b))
         if rank <= DETAILED:
@@ -156,11 +169,10 @@ def page(result, templates):
     parts += [_pair_section(result, share, a, b) for share, _, a, b in pairs[:DETAILED]]
     parts.append('<h2>Base code: passages in more than %d submissions, never counted</h2>'
                  '<table><thead><tr><th>file (where first seen)</th><th>passages</th>'
-                 '<th>most submissions</th><th>examples (tokens: names as V, strings as S)'
-                 '</th></tr></thead><tbody>' % result.base_limit)
+                 '<th>most submissions</th><th>examples</th></tr></thead><tbody>' % result.base_limit)
     for rel, count, most, examples in _base_groups(result):
         parts.append('<tr><td>%s</td><td>%d</td><td>%d</td><td>%s</td></tr>' % (
-            _e(rel), count, most, '<br>'.join('<code>%s</code>' % _e(t) for t in examples)))
+            _e(rel), count, most, ''.join('<pre>%s</pre>' % _e(t) for t in examples)))
     parts.append('</tbody></table></body></html>')
     return ''.join(parts)
 
