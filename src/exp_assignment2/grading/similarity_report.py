@@ -155,7 +155,8 @@ def page(result, templates):
                 result.base_limit, len(result.base)),
              '<p><img src="similarity-histogram.svg" alt="histogram of all pairs"></p>',
              '<h2>Pairs, most shared first</h2><table><thead><tr><th>#</th><th>pair</th>'
-             '<th>shared, of the smaller</th><th>shared (token characters)</th></tr></thead><tbody>']
+             '<th>shared, of the smaller</th><th>shared (token characters)</th></tr>'
+             '</thead><tbody>']
     for rank, (share, shared, a, b) in enumerate(pairs[:LISTED], 1):
         name = '%s and %s' % (_e(a), _e(b))
         if rank <= DETAILED:
@@ -169,7 +170,8 @@ def page(result, templates):
     parts += [_pair_section(result, share, a, b) for share, _, a, b in pairs[:DETAILED]]
     parts.append('<h2>Base code: passages in more than %d submissions, never counted</h2>'
                  '<table><thead><tr><th>file (where first seen)</th><th>passages</th>'
-                 '<th>most submissions</th><th>examples</th></tr></thead><tbody>' % result.base_limit)
+                 '<th>most submissions</th><th>examples</th></tr></thead><tbody>'
+                 % result.base_limit)
     for rel, count, most, examples in _base_groups(result):
         parts.append('<tr><td>%s</td><td>%d</td><td>%d</td><td>%s</td></tr>' % (
             _e(rel), count, most, ''.join('<pre>%s</pre>' % _e(t) for t in examples)))
