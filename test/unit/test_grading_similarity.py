@@ -52,6 +52,10 @@ def test_the_copied_pair_is_top_far_above_the_rest(made):
     assert share > 0.6
     assert all(p[0] < share / 4 for p in result.pairs[1:])
     assert result.top_for()['copier'][1] == 'original'
+    shares = similarity_report.all_shares(result)
+    assert len(shares) == 8 * 7 // 2        # every pair, those sharing nothing as 0
+    counts = similarity_report.histogram(shares)
+    assert counts[int(share * len(counts))] == 1 and sum(counts[len(counts) // 4:]) == 1
 
 
 def test_template_and_course_file_alone_flag_nobody(made):

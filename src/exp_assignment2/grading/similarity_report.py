@@ -37,6 +37,13 @@ def _slug(a, b):
     return 'pair-' + re.sub(r'[^A-Za-z0-9_-]', '_', '%s--%s' % (a, b))
 
 
+def all_shares(result):
+    """Every pair's share, those that share nothing as 0 (they are the bulk
+    the histogram shows an outlier against)."""
+    count = len(result.submissions)
+    return [p[0] for p in result.pairs] + [0.0] * (count * (count - 1) // 2 - len(result.pairs))
+
+
 def histogram(shares, bins=BINS):
     """Counts of ``shares`` (0..1) in ``bins`` equal bins."""
     counts = [0] * bins
@@ -183,7 +190,7 @@ def write(out, result, templates=()):
     """similarity.html, similarity-histogram.svg and similarity.json in ``out``."""
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, 'similarity-histogram.svg'), 'w') as f:
-        f.write(histogram_svg(histogram([p[0] for p in result.pairs]), len(result.pairs)))
+        f.write(histogram_svg(histogram(all_shares(result)), len(all_shares(result))))
     with open(os.path.join(out, 'similarity.html'), 'w') as f:
         f.write(page(result, templates))
     with open(os.path.join(out, 'similarity.json'), 'w') as f:
