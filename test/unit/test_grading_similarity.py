@@ -16,7 +16,7 @@ sys.path.insert(0, os.path.join(HERE, '..'))
 sys.path.insert(0, os.path.join(HERE, '..', '..', 'src'))
 pytest.importorskip('copydetect')
 import similarity_fixtures  # noqa: E402
-from exp_assignment2.grading import cli, similarity, similarity_report  # noqa: E402
+from exp_assignment2.grading import cli, report, similarity, similarity_report  # noqa: E402
 
 
 @pytest.fixture(scope='module')
@@ -107,15 +107,17 @@ def test_report_opens_in_chromium_with_its_image(made, tmp_path):
     root, template, folder = made
     out = str(tmp_path / 'report')
     os.makedirs(out)
-    with open(os.path.join(out, 'index.html'), 'w') as f:      # as report.write makes it
-        f.write('<h1>Grading</h1><table><thead><tr><th onclick="sortBy(this)">submission</th>'
-                '</tr></thead><tbody><tr><td><a href="pages/copier.html">copier</a></td>'
-                '</tr></tbody></table>')
+    summaries = {n: {'name': n, 'verdict': 'passed', 'flaky': False, 'checks': [],
+                     'reason': ''} for n in ('copier', 'student_1')}
+    with open(os.path.join(out, 'index.html'), 'w') as f:      # the grading's own index
+        f.write(report._index(summaries, {}, {'checks': []}, 'Grading'))
     assert cli.main([folder, '--template', template, '--similarity-only', '--out', out]) == 0
     data = json.load(open(os.path.join(out, 'similarity.json')))
     assert (data['pairs'][0]['a'], data['pairs'][0]['b']) == ('copier', 'original')
     index = open(os.path.join(out, 'index.html')).read()
-    assert 'similarity.html' in index and 'original</a></td>' in index
+    assert 'similarity.html' in index and '>most shared with</th>' in index
+    assert index.count('<a href="similarity.html#pair-') == 2     # a cell in each row
+    assert 'original</a></td>' in index
     browser = shutil.which('chromium')
     if not browser:
         pytest.skip('no chromium (tools/run test installs it)')
