@@ -125,3 +125,19 @@ def test_report_opens_in_chromium_with_its_image(made, tmp_path):
                           '--dump-dom', 'file://' + os.path.join(out, 'similarity.html')],
                          capture_output=True, text=True, timeout=120).stdout
     assert 'copier and original' in dom and 'data-images-missing="0"' in dom
+
+
+def test_grading_yaml_template_relative_to_the_folder(made, tmp_path):
+    from exp_assignment2.grading import similarity_run
+    from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file
+    root, template, folder = made
+    teacher_file = tmp_path / 'grading.yaml'
+    teacher_file.write_text('template: [%s]\n' % os.path.relpath(template, folder))
+    teacher = read_teacher_file(str(teacher_file))
+    args = cli.parse_args([folder])
+    assert similarity_run.templates_of(args, teacher, folder) == [template]
+    args = cli.parse_args([folder, '--template', folder])        # the command line's first
+    assert similarity_run.templates_of(args, teacher, folder) == [folder]
+    with pytest.raises(TeacherFileError):
+        similarity_run.templates_of(cli.parse_args([folder, '--template', root + '/nope']),
+                                    {}, folder)
