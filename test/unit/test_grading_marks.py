@@ -40,7 +40,8 @@ def class_of_four(tmp_path, profile):
                      'abort': ''}],
               errors=[{'source': 'logs/command-0.log', 'line': 3, 'summary': 'RuntimeError: boom',
                        'excerpt': 'File "%s/src/dog/scripts/dog.py", line 9\nRuntimeError: '
-                                  'boom' % work}], error_count=1,
+                                  'boom\nFile "/tmp/exp2-grade-x1/runs/ben/work/overlay/ben-1f/src/'
+                                  'dog/scripts/b.py"' % work}], error_count=1,
               repeat_command='bash tools/run grade %s/class/ben' % tmp_path)
     write_run(runs, 'cat', 'cat', 'grader_error', 0.0, checks=None,
               reason='the simulator died (sim, exit code -9)')
@@ -85,6 +86,8 @@ def test_the_students_page_hides_what_it_must(tmp_path):
         ben = f.read()
     assert 'The node <code>dog-5</code> died' in ben and 'RuntimeError: boom' in ben
     assert 'File &quot;dog/scripts/dog.py&quot;, line 9' in ben         # the package's own path
+    assert 'File &quot;dog/scripts/b.py&quot;' in ben and '/tmp/' not in ben   # the sandbox's
+    assert 'died (exit code 1): <b>RuntimeError: boom</b>' in ben
     assert 'keep the points they earned' in ben
     assert 'Points from the checks shown here' in ben           # not the hidden one's
     assert 'data:image/png;base64,' in ben                      # the arena, inlined

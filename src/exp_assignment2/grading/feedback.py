@@ -11,6 +11,7 @@ submission, and no absolute path of the teacher's machine (:func:`cleaner`).
 import base64
 import html
 import os
+import re
 
 from exp_assignment2.grading.report_marks import _number
 
@@ -27,6 +28,7 @@ WORDS = {
     'grader_error': 'The grader failed on its own side (not because of your code). Your '
                     'submission has no score yet: it will be graded again.',
 }
+RUN_PATH = re.compile(r'(/[^\s"\'<>:]*)?/runs/[^/\s"\']+/work/(overlay/[^/\s"\']+/)?(src/)?')
 STYLE = '''body{font-family:sans-serif;margin:1.5em;color:#222;max-width:60em}
 table{border-collapse:collapse}th,td{border:1px solid #ccc;padding:4px 8px;font-size:13px;
 vertical-align:top}th{background:#eee}pre{background:#f6f6f6;padding:8px;overflow-x:auto;
@@ -53,7 +55,9 @@ def cleaner(report_dir, run):
     pairs.sort(key=lambda p: -len(p[0]))
 
     def clean(text):
-        text = str(text if text is not None else '')
+        # a run's own directory as the sandbox named it (e.g. /tmp/exp2-grade-*/runs/L/work/
+        # overlay/L-hash/src/): the package's path from its folder on
+        text = RUN_PATH.sub('', str(text if text is not None else ''))
         for old, new in pairs:
             if len(old.strip('/')) > 1:
                 text = text.replace(old, new)
@@ -89,11 +93,13 @@ def to_fix(summary, run, clean):
     for e in run.get('launch_errors') or []:
         items.append('roslaunch could not start a node (<code>%s</code>): %s' % (
             _e(clean(e.get('command'))), _e(clean(e.get('line')))))
+    errors = run.get('errors') or []
     for d in run.get('died') or []:
+        said = next((e['summary'] for e in errors if e['source'] == d.get('log')), '')
         items.append('The node <code>%s</code> died (exit code %s)%s' % (
             _e(d['node']), _e(d.get('exit', d.get('code'))),
-            ': <pre>%s</pre>' % _e(clean(d['abort'])) if d.get('abort') else ''))
-    errors = run.get('errors') or []
+            ': <pre>%s</pre>' % _e(clean(d['abort'])) if d.get('abort') else
+            ': <b>%s</b>' % _e(clean(said)) if said else ''))
     if errors:
         first = errors[0]
         items.append('The first Python error (of %d), in %s line %s: <b>%s</b><pre>%s</pre>' % (
@@ -155,7 +161,7 @@ def page(summary, run, pictures, profile, clean):
     parts.append('<h2>How it was started</h2><pre>%s</pre>' % _e(clean(
         '\n'.join(run.get('commands') or []))))
     pics = [(k, pictures.get(k)) for k in ('top', 'head')] + \
-        sorted((pictures.get('frames') or {}).items())
+        list((pictures.get('frames') or {}).items())     # the moments in their order
     for title, chosen, _ in ((pictures.get('windows') or {}).get('rows') or []):
         pics += [('your window "%s" at %s' % (title, m), p) for m, p in chosen.items() if p]
     pics = [(k, _inline(p)) for k, p in pics if p]
