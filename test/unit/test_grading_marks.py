@@ -148,3 +148,19 @@ def test_the_autograder_always_writes_a_results_file(tmp_path):
     check_format(broken)
     assert 'score' not in broken and broken['output'].startswith('NOT GRADED')
     assert 'grade exited with 3' in broken['output']
+
+
+def test_over_repeats_the_median_score_and_its_run(tmp_path):
+    runs = str(tmp_path / 'runs')
+    values = {'r1': [2, 40.0, 0.8, 5.0, 0], 'r2': [0, None, 0.0, 0.0, 0],
+              'r3': [1, 40.0, 0.3, 5.0, 0]}
+    for i, (run, figures) in enumerate(sorted(values.items())):
+        write_run(runs, 'ann-' + run, 'ann', 'passed', 1.0, seed=i + 1, checks=[
+            {'name': c['name'], 'metric': c['metric'], 'value': v, 'threshold': 't',
+             'passed': True, 'detail': ''} for c, v in zip(DOG['checks'], figures)])
+    write_run(runs, 'ann-r4', 'ann', 'grader_error', 0.0, seed=4, checks=None)
+    ann = report.write(str(tmp_path), DOG)['ann']
+    assert ann['scores'] == [100, 20, 87.5, None]
+    assert (ann['score'], ann['score_run']) == (87.5, 'ann-r3')     # the grader error left out
+    with open(str(tmp_path / 'pages' / 'ann.html')) as f:
+        assert 'the median of the repeats' in f.read()
