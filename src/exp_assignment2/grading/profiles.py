@@ -3,8 +3,8 @@
 A profile names the world's robot and ball, the default start commands, the
 duration, the limits of a run and its checks (a metric of
 :mod:`exp_assignment2.grading.metrics` with thresholds, and the rubric's
-``points``, ``zero`` and ``visibility``: :mod:`exp_assignment2.grading.scores`). ``--profile`` takes a
-profile's name (``dog``, ``miro``) or the path of a teacher's copy.
+``points``, ``zero`` and ``visibility``: :mod:`exp_assignment2.grading.scores`).
+``--profile`` takes a profile's name (``dog``, ``miro``) or the path of a teacher's copy.
 """
 import difflib
 import os

@@ -261,7 +261,8 @@ def _index(summaries, pictures, profile, title):
     for s in report_marks.by_score(summaries):
         name, values = s['name'], {c['name']: c for c in s['checks']}
         parts.append('<tr><td><a href="pages/%s.html">%s</a></td>%s<td data-key="%d">%s%s</td>' % (
-            _e(name), _e(name), report_marks.score_cell(s), VERDICTS.index(s['verdict']), _verdict_badge(s['verdict']),
+            _e(name), _e(name), report_marks.score_cell(s), VERDICTS.index(s['verdict']),
+            _verdict_badge(s['verdict']),
             ' <span class="flaky">flaky</span>' if s['flaky'] else ''))
         for check_name in check_names:
             check = values.get(check_name)
