@@ -207,7 +207,13 @@ def test_the_report_opens_in_a_browser_with_every_image(graded, tmp_path):
         index = f.read()
     assert index.count('<tr><td><a href="pages/') == len(grading_fixtures.EXPECTED)
     with open(os.path.join(out, 'grades.csv')) as f:
-        assert len(f.read().strip().splitlines()) == len(grading_fixtures.EXPECTED) + 1
+        lines = f.read().strip().splitlines()
+    assert len(lines) == len(grading_fixtures.EXPECTED) + 1
+    assert lines[0].startswith('submission,verdict,flaky,score,max,')
+    # the students' pages and Gradescope's results, one each (docs/grading.md)
+    for name in grading_fixtures.EXPECTED:
+        assert os.path.isfile(os.path.join(out, 'feedback', name + '.html'))
+        assert os.path.isfile(os.path.join(out, 'gradescope', name, 'results.json'))
 
 
 def test_the_report_is_made_again_without_running(graded):

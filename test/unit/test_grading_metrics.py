@@ -133,6 +133,10 @@ def test_verdicts_tell_causes_apart(tmp_path):
     got = judge('crash', {'logs/command-0.log': crash}, states=dog_states(until=5))
     assert (got['verdict'], got['reason']) == ('crashed', 'dog-5 died (exit code 1): '
                                                           'RuntimeError: the dog has no legs')
+    # judged on the truth until the crash, so that it keeps the points it earned (scores)
+    assert got['checks_until'] == 'crashed' and [c['name'] for c in got['checks']] == [
+        c['name'] for c in DOG['checks']]
+    assert {c['name']: c['value'] for c in got['checks']}['no Python error'] == 1
     sim = '[gazebo-1] process has died [pid 9, exit code 1, cmd /r/scripts/simulator.py x].\n'
     got = judge('sim', {'logs/command-0.log': sim}, states=dog_states(until=5))
     assert got['verdict'] == 'grader_error' and 'the simulator died' in got['reason']
@@ -142,6 +146,7 @@ def test_verdicts_tell_causes_apart(tmp_path):
                 ended_by='wall_limit')
     assert (got['verdict'], got['reason']) == ('timed_out', '5 of 200 simulated s within the '
                                                             'wall-clock limit')
+    assert got['checks_until'] == 'timed_out' and len(got['checks']) == len(DOG['checks'])
     # the run's own duration (--duration 60), not the profile's
     got = judge('slow60', {'logs/command-0.log': ''}, states=dog_states(until=5),
                 ended_by='wall_limit', duration=60.0)

@@ -178,6 +178,7 @@ def main(argv=None):
         cluster.close()
     summaries = report.write(out, profile)
     log(summary_line(summaries, out))
+    log(feedback_line(summaries, out))
     similarity_step(args, out, log)
     return EXIT_OK
 
@@ -215,6 +216,15 @@ def similarity_step(args, out, log):
         log('similarity: failed: %s: %s' % (type(exc).__name__, exc))
         return 1
     return EXIT_OK
+
+
+def feedback_line(summaries, out):
+    """Where the students' pages are (one package: its own page)."""
+    if len(summaries) == 1:
+        return 'your feedback page: %s' % os.path.join(out, 'feedback', next(iter(summaries))
+                                                        + '.html')
+    return 'the students\' pages (no hidden check, no path of this machine): %s' % os.path.join(
+        out, 'feedback')
 
 
 def summary_line(summaries, out):

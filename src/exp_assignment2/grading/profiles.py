@@ -2,8 +2,9 @@
 
 A profile names the world's robot and ball, the default start commands, the
 duration, the limits of a run and its checks (a metric of
-:mod:`exp_assignment2.grading.metrics` with thresholds). ``--profile`` takes a
-profile's name (``dog``, ``miro``) or the path of a teacher's copy.
+:mod:`exp_assignment2.grading.metrics` with thresholds, and the rubric's
+``points``, ``zero`` and ``visibility``: :mod:`exp_assignment2.grading.scores`).
+``--profile`` takes a profile's name (``dog``, ``miro``) or the path of a teacher's copy.
 """
 import difflib
 import os
@@ -12,12 +13,14 @@ import yaml
 
 from exp_assignment2.grading.metrics import METRICS
 from exp_assignment2.grading.paths import PROFILE_DIR
+from exp_assignment2.grading.scores import check_spec
 
 REQUIRED = ('name', 'duration', 'default_commands', 'robot', 'checks')
 KEYS = {'name', 'title', 'duration', 'default_commands', 'world_commands', 'delay', 'cpu_per_run',
         'memory_limit_mb', 'process_limit', 'robot', 'ball', 'camera', 'record_topics',
         'checks'}
-CHECK_KEYS = {'name', 'metric', 'min', 'max', 'reach', 'joint', 'topic', 'tolerance'}
+CHECK_KEYS = {'name', 'metric', 'min', 'max', 'reach', 'joint', 'topic', 'tolerance',
+              'points', 'zero', 'visibility'}      # the last three: the rubric (grading.scores)
 DEFAULTS = {'title': '', 'world_commands': [], 'delay': 5, 'cpu_per_run': 1.0, 'memory_limit_mb': 3000,
             'process_limit': 512, 'ball': None, 'camera': None, 'record_topics': []}
 
@@ -93,5 +96,6 @@ def check(data, where='profile'):
         for key in ('min', 'max', 'reach', 'tolerance'):
             if key in item and (not isinstance(item[key], number) or isinstance(item[key], bool)):
                 raise ProfileError('%s: %s: %r is not a number' % (here, key, item[key]))
+        check_spec(item, here, ProfileError)
         item.setdefault('name', item['metric'])
     return profile

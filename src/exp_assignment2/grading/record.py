@@ -23,7 +23,8 @@ keys, those of a run that did not run left out:
   ``real_time_factor``, ``wall_time``, ``cpu_s``, ``memory_mb``,
   ``peak_memory_mb``, ``oom``, ``all_gone``, ``sandbox_exit``, ``cut``;
 * the verdict (:mod:`exp_assignment2.grading.verdicts`): ``verdict``,
-  ``reason``, ``checks``, ``errors``, ``error_count``, ``died``,
+  ``reason``, ``checks`` (of a crashed or timed-out run too, with ``checks_until``
+  naming its verdict: judged on the truth until its end), ``errors``, ``error_count``, ``died``,
   ``launch_errors``.
 """
 import json

@@ -4,7 +4,9 @@
 In REPORT_DIR: ``index.html`` (one row per submission, sortable, opens from
 the file system), ``pages/<name>.html`` (the commands, the verdict, the
 arena from above, the head's angle, the frames, the log excerpts, the build
-log), ``report.json`` (everything) and ``grades.csv`` (one line each).
+log), ``report.json`` (everything), ``grades.csv`` (one line each, with the
+scores: :mod:`.report_marks`), ``feedback/<name>.html`` (the student's page:
+:mod:`.feedback`) and ``gradescope/<name>/results.json`` (:mod:`.gradescope`).
 """
 import collections
 import csv
@@ -14,7 +16,7 @@ import os
 import shutil
 import statistics
 
-from exp_assignment2.grading import figures, metrics, record
+from exp_assignment2.grading import feedback, figures, gradescope, metrics, record, report_marks
 from exp_assignment2.grading.logs import read_log
 from exp_assignment2.grading.report_camera import camera_section, window_pictures
 from exp_assignment2.grading.truth import read_record
@@ -139,7 +141,7 @@ def _page(summary, runs, runs_dir, pictures, profile):
                  _e(summary['name']), STYLE, IMAGES_JS),
              '<p><a href="../index.html">&larr; all submissions</a></p>',
              '<h1>%s %s</h1>' % (_e(summary['name']), _verdict_badge(summary['verdict'])),
-             '<p>%s</p>' % _e(summary['reason'])]
+             '<p>%s</p>' % _e(summary['reason']), report_marks.score_paragraph(summary)]
     if summary['flaky']:
         parts.append('<p class="flaky">flaky: the repeats ended %s</p>'
                      % _e(', '.join(summary['verdicts'])))
@@ -158,13 +160,14 @@ def _page(summary, runs, runs_dir, pictures, profile):
         parts.append('<p>cut from what the worker sent back: %s</p>' % _e(cut))
     if summary['checks']:
         parts.append('<h2>Checks</h2><table><tr><th>check</th><th>figure</th><th>threshold</th>'
-                     '<th></th><th>detail</th></tr>')
+                     '<th></th><th>points</th><th>detail</th></tr>')
         for check in summary['checks']:
             parts.append('<tr><td>%s</td><td>%s</td><td>%s</td><td class="%s">%s</td>'
-                         '<td>%s</td></tr>' % (
+                         '%s<td>%s</td></tr>' % (
                              _e(check['name']), _e(_figure_value(check['value'])),
                              _e(check['threshold']), 'ok' if check['passed'] else 'fail',
-                             'passed' if check['passed'] else 'failed', _e(check['detail'])))
+                             'passed' if check['passed'] else 'failed',
+                             report_marks.points_cell(check), _e(check['detail'])))
         parts.append('</table>')
     if pictures.get('top') or pictures.get('head'):
         parts.append('<h2>What happened</h2><p>')
@@ -250,14 +253,16 @@ def _index(summaries, pictures, profile, title):
              '<h1>%s</h1><p>%d submissions: %s. Click a heading to sort.</p>' % (
                  _e(title), len(summaries),
                  ', '.join('%d %s' % (counts[v], v) for v in VERDICTS if counts[v])),
+             report_marks.histogram_svg(summaries),
              '<table><thead><tr><th onclick="sortBy(this)">submission</th>'
-             '<th onclick="sortBy(this)">verdict</th>']
+             '<th onclick="sortBy(this)">score</th><th onclick="sortBy(this)">verdict</th>']
     parts += ['<th onclick="sortBy(this)">%s</th>' % _e(n) for n in check_names]
     parts.append('<th onclick="sortBy(this)">first error</th><th>picture</th></tr></thead><tbody>')
-    for name, s in summaries.items():
-        values = {c['name']: c for c in s['checks']}
-        parts.append('<tr><td><a href="pages/%s.html">%s</a></td><td data-key="%d">%s%s</td>' % (
-            _e(name), _e(name), VERDICTS.index(s['verdict']), _verdict_badge(s['verdict']),
+    for s in report_marks.by_score(summaries):
+        name, values = s['name'], {c['name']: c for c in s['checks']}
+        parts.append('<tr><td><a href="pages/%s.html">%s</a></td>%s<td data-key="%d">%s%s</td>' % (
+            _e(name), _e(name), report_marks.score_cell(s), VERDICTS.index(s['verdict']),
+            _verdict_badge(s['verdict']),
             ' <span class="flaky">flaky</span>' if s['flaky'] else ''))
         for check_name in check_names:
             check = values.get(check_name)
@@ -280,7 +285,7 @@ def write(report_dir, profile, title=None):
     """Make the report from ``report_dir/runs``; returns the summaries."""
     runs_dir = os.path.join(report_dir, 'runs')
     runs = load_runs(runs_dir)
-    summaries = summarise(runs)
+    summaries = report_marks.add_scores(summarise(runs), runs, profile)
     pages = os.path.join(report_dir, 'pages')
     img_dir = os.path.join(pages, 'img')
     shutil.rmtree(pages, ignore_errors=True)
@@ -292,6 +297,8 @@ def write(report_dir, profile, title=None):
         pictures[name] = _run_pictures(main, runs_dir, img_dir, profile)
         with open(os.path.join(pages, name + '.html'), 'w') as f:
             f.write(_page(summary, group, runs_dir, pictures[name], profile))
+    feedback.write_all(report_dir, summaries, runs, pictures, profile)      # the students'
+    gradescope.write_all(report_dir, summaries, runs, profile)
     title = title or 'Grading: %s' % (profile.get('title') or profile['name'])
     with open(os.path.join(report_dir, 'index.html'), 'w') as f:
         f.write(_index(summaries, pictures, profile, title))
@@ -301,11 +308,13 @@ def write(report_dir, profile, title=None):
     with open(os.path.join(report_dir, 'grades.csv'), 'w', newline='') as f:
         writer = csv.writer(f)
         names = [c['name'] for c in profile['checks']]
-        writer.writerow(['submission', 'verdict', 'flaky'] + names + ['reason'])
+        marks, points = report_marks.csv_header(profile)
+        writer.writerow(['submission', 'verdict', 'flaky'] + marks + names + points + ['reason'])
         for s in summaries.values():
             values = {c['name']: c['value'] for c in s['checks']}
-            writer.writerow([s['name'], s['verdict'], int(s['flaky'])] +
-                            [values.get(n, '') for n in names] + [s['reason']])
+            marks, points = report_marks.csv_cells(s, profile)
+            writer.writerow([s['name'], s['verdict'], int(s['flaky'])] + marks +
+                            [values.get(n, '') for n in names] + points + [s['reason']])
     _similarity_column(report_dir)
     return summaries
 

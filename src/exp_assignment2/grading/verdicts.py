@@ -258,4 +258,8 @@ def judge(work, record_dir, result, profile):
         out.update(died=seen.died, launch_errors=seen.launch_errors)
     if verdict in ('passed', 'failed_checks'):
         out['checks'] = seen.checks
+    elif verdict in ('crashed', 'timed_out') and seen.checks is not None:
+        # judged from the ground truth recorded until the end: the points earned so far
+        out['checks'] = seen.checks
+        out['checks_until'] = verdict
     return out
