@@ -177,9 +177,10 @@ def main(argv=None):
         progress.close()
         cluster.close()
     summaries = report.write(out, profile)
+    if len(summaries) > 1:      # before the last lines, which name the pages
+        similarity_step(args, out, log)
     log(summary_line(summaries, out))
     log(feedback_line(summaries, out))
-    similarity_step(args, out, log)
     return EXIT_OK
 
 
