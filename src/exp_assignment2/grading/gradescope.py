@@ -1,6 +1,6 @@
 """Gradescope (no ROS): a submission's ``results.json`` in Gradescope's documented
-format (https://gradescope-autograders.readthedocs.io/en/latest/specs/), and
-the autograder's entry point (``scripts/gradescope_autograder.py``,
+format (its autograder specifications: docs/grading.md, "Gradescope"), and
+the autograder's entry point (``python3 -m exp_assignment2.grading.gradescope``,
 ``tools/gradescope/run_autograder``).
 
 ``grade`` writes ``REPORT/gradescope/<name>/results.json`` for every
@@ -148,3 +148,7 @@ def main(argv=None):
                      log=lambda t: print('[autograder] ' + t, file=sys.stderr, flush=True))
     print('[autograder] score: %s' % data.get('score', 'none (not graded)'), file=sys.stderr)
     return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
