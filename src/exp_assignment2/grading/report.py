@@ -9,14 +9,14 @@ scores: :mod:`.report_marks`), ``feedback/<name>.html`` (the student's page:
 :mod:`.feedback`) and ``gradescope/<name>/results.json`` (:mod:`.gradescope`).
 """
 import collections
-import csv
 import html
 import json
 import os
 import shutil
 import statistics
 
-from exp_assignment2.grading import feedback, figures, gradescope, metrics, record, report_marks
+from exp_assignment2.grading import feedback, figures, gradescope, metrics, record, \
+    report_failures, report_marks
 from exp_assignment2.grading.logs import read_log
 from exp_assignment2.grading.report_camera import camera_section, window_pictures
 from exp_assignment2.grading.truth import read_record
@@ -193,8 +193,8 @@ def _page(summary, runs, runs_dir, pictures, profile):
                          _e(run.get('repeat_command'))))
     parts.append('</table>')
     errors = main.get('errors') or []
-    parts.extend(_launch_errors_section(main))
-    parts.extend(_deaths_section(main))
+    parts.extend(report_failures.launch_errors_section(main))
+    parts.extend(report_failures.deaths_section(main))
     if errors:
         parts.append('<h2>Errors (%d)</h2>' % main.get('error_count', len(errors)))
         for error in errors[:10]:
@@ -211,37 +211,6 @@ def _page(summary, runs, runs_dir, pictures, profile):
     parts.append('<p>Package version %s. Records: <code>%s</code></p></body></html>'
                  % (_e(main.get('version', '?')), _e(os.path.join(runs_dir, main['label']))))
     return ''.join(parts)
-
-
-def _launch_errors_section(run):
-    """roslaunch's nodes that could not start: errors on the page, not a verdict."""
-    errors = run.get('launch_errors') or []
-    if not errors:
-        return []
-    return ['<h2>Nodes that could not start (%d)</h2><p>roslaunch reported these and started '
-            'the rest of its nodes; the verdict follows what the robot did.</p><ul>%s</ul>' % (
-                len(errors), ''.join('<li><code>%s</code>: %s</li>' % (
-                    _e(e.get('command')), _e(e.get('line'))) for e in errors))]
-
-
-def _deaths_section(run):
-    """Each node that died: its exit (a signal named), the message of its
-    abort, the last lines of its output and of its own log."""
-    died = run.get('died') or []
-    if not died:
-        return []
-    parts = ['<h2>Nodes that died (%d)</h2>' % len(died)]
-    for d in died:
-        parts.append('<h3>%s: exit code %s</h3><p>said in %s</p>' % (
-            _e(d['node']), _e(d.get('exit', d['code'])), _e(d['log'])))
-        if d.get('abort'):
-            parts.append('<p>why it aborted:</p><pre class="abort">%s</pre>' % _e(d['abort']))
-        if d.get('output'):
-            parts.append('<p>the last lines of its output:</p><pre>%s</pre>' % _e(d['output']))
-        for own in d.get('node_logs') or []:
-            parts.append('<p>the last lines of its log %s:</p><pre>%s</pre>' % (
-                _e(own['log']), _e(own['tail'])))
-    return parts
 
 
 def _index(summaries, pictures, profile, title):
@@ -305,21 +274,8 @@ def write(report_dir, profile, title=None):
     with open(os.path.join(report_dir, 'report.json'), 'w') as f:
         json.dump({'profile': profile, 'submissions': list(summaries.values()), 'runs': runs},
                   f, indent=1, default=str)
-    with open(os.path.join(report_dir, 'grades.csv'), 'w', newline='') as f:
-        writer = csv.writer(f)
-        names = [c['name'] for c in profile['checks']]
-        marks, points = report_marks.csv_header(profile)
-        writer.writerow(['submission', 'verdict', 'flaky'] + marks + names + points + ['reason'])
-        for s in summaries.values():
-            values = {c['name']: c['value'] for c in s['checks']}
-            marks, points = report_marks.csv_cells(s, profile)
-            writer.writerow([s['name'], s['verdict'], int(s['flaky'])] + marks +
-                            [values.get(n, '') for n in names] + points + [s['reason']])
-    _similarity_column(report_dir)
-    return summaries
-
-
-def _similarity_column(report_dir):
-    """The index's column of each one's highest pair, when a similarity report is there."""
+    report_marks.write_csv(os.path.join(report_dir, 'grades.csv'), summaries, profile)
+    # the index's column of each one's highest pair, when a similarity report is there
     from exp_assignment2.grading.similarity_report import annotate_index
     annotate_index(report_dir)
+    return summaries

@@ -1,6 +1,7 @@
 """The report's marks (no ROS): each submission's score from its runs
 (:mod:`exp_assignment2.grading.scores`), its columns in ``grades.csv``, its
 cell in ``index.html`` and the class's distribution as an inline SVG."""
+import csv
 import html
 
 from exp_assignment2.grading import scores
@@ -111,3 +112,17 @@ def points_cell(check):
         'no score' if check.get('points') is None else _number(check['points']),
         _number(check['max_points']), '' if check.get('visibility', 'visible') == 'visible'
         else ' <small>(%s)</small>' % html.escape(check['visibility']))
+
+
+def write_csv(path, summaries, profile):
+    """grades.csv: a row a submission, its verdict, marks, each check's figure and points."""
+    with open(path, 'w', newline='') as f:
+        writer = csv.writer(f)
+        names = [c['name'] for c in profile['checks']]
+        marks, points = csv_header(profile)
+        writer.writerow(['submission', 'verdict', 'flaky'] + marks + names + points + ['reason'])
+        for s in summaries.values():
+            values = {c['name']: c['value'] for c in s['checks']}
+            marks, points = csv_cells(s, profile)
+            writer.writerow([s['name'], s['verdict'], int(s['flaky'])] + marks +
+                            [values.get(n, '') for n in names] + points + [s['reason']])

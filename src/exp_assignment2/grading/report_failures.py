@@ -1,0 +1,38 @@
+"""The teacher's page's sections on what failed in a run (no ROS): the nodes
+roslaunch could not start, and the nodes that died, each with why."""
+import html
+
+
+def _e(text):
+    return html.escape(str(text if text is not None else ''))
+
+
+def launch_errors_section(run):
+    """roslaunch's nodes that could not start: errors on the page, not a verdict."""
+    errors = run.get('launch_errors') or []
+    if not errors:
+        return []
+    return ['<h2>Nodes that could not start (%d)</h2><p>roslaunch reported these and started '
+            'the rest of its nodes; the verdict follows what the robot did.</p><ul>%s</ul>' % (
+                len(errors), ''.join('<li><code>%s</code>: %s</li>' % (
+                    _e(e.get('command')), _e(e.get('line'))) for e in errors))]
+
+
+def deaths_section(run):
+    """Each node that died: its exit (a signal named), the message of its
+    abort, the last lines of its output and of its own log."""
+    died = run.get('died') or []
+    if not died:
+        return []
+    parts = ['<h2>Nodes that died (%d)</h2>' % len(died)]
+    for d in died:
+        parts.append('<h3>%s: exit code %s</h3><p>said in %s</p>' % (
+            _e(d['node']), _e(d.get('exit', d['code'])), _e(d['log'])))
+        if d.get('abort'):
+            parts.append('<p>why it aborted:</p><pre class="abort">%s</pre>' % _e(d['abort']))
+        if d.get('output'):
+            parts.append('<p>the last lines of its output:</p><pre>%s</pre>' % _e(d['output']))
+        for own in d.get('node_logs') or []:
+            parts.append('<p>the last lines of its log %s:</p><pre>%s</pre>' % (
+                _e(own['log']), _e(own['tail'])))
+    return parts
