@@ -64,11 +64,23 @@ def attach(engine):
     except OSError as exc:
         rospy.logerr('simulator: cannot reach the grader at %s: %s', path, exc)
         return None
+    names = [topic.strip() for topic in os.environ.get(TOPICS_ENV, '').split(',')
+             if topic.strip()]
     truth = GroundTruth(engine, link)
+    relays = {name: TopicRelay(truth, engine, name) for name in names if name.startswith('/')}
+    relative = [name for name in names if not name.startswith('/')]
+
+    def follow(model):
+        """A relative topic under each model's namespace, as the model comes."""
+        for name in relative:
+            topic = model.topic(name)
+            if topic not in relays:
+                relays[topic] = TopicRelay(truth, engine, topic)
+    truth.model_listeners.append(follow)
+    for model in list(engine.models.values()):     # those described before we listened
+        follow(model)
+    truth.relays = relays
     engine.step_listeners.append(truth)
     engine.frame_listeners.append(truth.offer_frame)
-    relays = [TopicRelay(truth, engine, topic)
-              for topic in os.environ.get(TOPICS_ENV, '').split(',') if topic.strip()]
-    truth.relays = relays
     rospy.loginfo('simulator: sending the ground truth to the grader (%s)', path)
     return truth

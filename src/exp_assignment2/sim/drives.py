@@ -22,6 +22,7 @@ class VelocityCommand(object):
     def __init__(self, now, max_linear=2.0, max_angular=3.0, cmd_timeout=0.5):
         self.now, self.max_linear, self.max_angular = now, max_linear, max_angular
         self.cmd_timeout = cmd_timeout
+        self.taken = 0          # commands taken (finite ones), ever: who drives this body
         self.reset()
 
     def reset(self):
@@ -38,6 +39,7 @@ class VelocityCommand(object):
             vx, vy = cap_norm(vx, vy, self.max_linear)
             wz = clamp(wz, self.max_angular)
         self.cmd, self.cmd_time = (vx, vy, wz), self.now()
+        self.taken += 1
         return over
 
     def current(self):

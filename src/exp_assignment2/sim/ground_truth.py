@@ -6,15 +6,27 @@ it puts in the environment (:data:`SOCKET_ENV`); the simulator, and only it,
 connects and streams JSON lines as the world runs:
 
 * ``{"kind": "hello", ...}``: once, at connection (pid, models);
+* ``{"kind": "model", "t": T, "facts": {...}}``: each model in the world
+  then, and each one spawned later, as it is
+  (:func:`~exp_assignment2.sim.model_facts.describe`: its joints, sensors,
+  plugins and the topics they take commands on, whether it is a sphere), and
+  ``{"kind": "deleted", "t": T, "name": ...}``: what the grader tells the
+  robot, its head and the ball by, whatever they are called;
 * ``{"kind": "state", "t": T, "models": {name: [x, y, z, yaw]},
-  "joints": {model: {joint: position}}}``: every ``period`` s of simulated
-  time (10 Hz by default), from the engine's own bodies: a node publishing a
-  fake ``/odom`` changes nothing here;
+  "joints": {model: {joint: position}}, "fed": {model: n},
+  "placed": {model: n}}``: every ``period`` s of simulated time (10 Hz by
+  default), from the engine's own bodies: a node publishing a fake ``/odom``
+  changes nothing here. ``fed`` counts the commands a model's drive plugins
+  have taken so far, ``placed`` the times a command put it somewhere
+  (``set_model_state``, ``set_link_state``), each only where not 0;
 * ``{"kind": "frame", "t": T, "camera": name, "jpeg": BASE64}``: a camera's
   picture, small, at most once per ``frame_period`` s of simulated time,
   while somebody watches that camera (the frame is drawn anyway then);
 * ``{"kind": "topic", "t": T, "topic": ..., "msg": {...}}``: messages of the
-  topics the grader asked for (what was commanded, e.g. MiRo's targets).
+  topics the grader asked for (what was commanded, e.g. MiRo's targets); a
+  relative name is relayed under each model's namespace (``cmd_vel``:
+  ``/robot2/cmd_vel`` once robot2 is spawned), so that it follows whichever
+  model the grader judges the robot.
 
 Sending never holds the world: lines go through a bounded queue to a thread;
 when the grader is slow, frames are dropped first, then states, and the
@@ -29,6 +41,8 @@ import socket
 import threading
 
 import cv2
+
+from exp_assignment2.sim.model_facts import describe
 
 SOCKET_ENV = 'EXP2_GRADER_SOCKET'
 TOPICS_ENV = 'EXP2_GRADER_TOPICS'       # comma-separated topic names to relay
@@ -97,10 +111,32 @@ class GroundTruth(object):
         self.period, self.frame_period = float(period), float(frame_period)
         self._next = 0.0
         self._next_frame = {}
+        self._described, self._generation = {}, None     # name -> the Model described
+        self.model_listeners = []        # fn(model) for each model described (the host's)
         link.send({'kind': 'hello', 'pid': os.getpid(), 'time': engine.time,
                    'models': list(engine.models)})
+        self._describe_changes()
+
+    def _describe_changes(self):
+        """A 'model' record for each model spawned since the last call (a name
+        spawned again is a new model), a 'deleted' one for each one gone."""
+        if self._generation == self.engine.generation:
+            return
+        self._generation = self.engine.generation
+        now = round(self.engine.time, 4)
+        for name in [n for n in self._described if n not in self.engine.models]:
+            del self._described[name]
+            self.link.send({'kind': 'deleted', 't': now, 'name': name})
+        for name, model in list(self.engine.models.items()):
+            if self._described.get(name) is not model:
+                self._described[name] = model
+                self.link.send({'kind': 'model', 't': now, 'facts': describe(
+                    model, self.engine.plugins.get(name, ()))})
+                for listener in self.model_listeners:
+                    listener(model)
 
     def __call__(self, engine):
+        self._describe_changes()
         now = engine.time
         if now < self._next - 2 * self.period:      # the clock went back (reset_simulation)
             self._next = now
@@ -110,8 +146,13 @@ class GroundTruth(object):
         self.link.send(self.sample(now), droppable=True)
 
     def sample(self, now):
-        models, joints = {}, {}
+        models, joints, fed, placed = {}, {}, {}, {}
         for name, model in list(self.engine.models.items()):
+            taken = sum(plugin.commands_taken for plugin in self.engine.plugins.get(name, ()))
+            if taken:
+                fed[name] = taken
+            if model.placed:
+                placed[name] = model.placed
             (x, y, z), quat = model.pose()
             siny = 2.0 * (quat[3] * quat[2] + quat[0] * quat[1])
             cosy = 1.0 - 2.0 * (quat[1] * quat[1] + quat[2] * quat[2])
@@ -119,7 +160,12 @@ class GroundTruth(object):
             if model.movable_joints:
                 names, positions, _, _ = model.joint_states()
                 joints[name] = {n: _finite(v) for n, v in zip(names, positions)}
-        return {'kind': 'state', 't': round(now, 4), 'models': models, 'joints': joints}
+        record = {'kind': 'state', 't': round(now, 4), 'models': models, 'joints': joints}
+        if fed:
+            record['fed'] = fed
+        if placed:
+            record['placed'] = placed
+        return record
 
     def offer_frame(self, camera, when, bgr):
         """A camera's finished frame (its worker thread): kept at most once per

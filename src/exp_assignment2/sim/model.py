@@ -43,6 +43,7 @@ class Model(object):
                                  fixed=self.static or self.kinematic)
         self.id = self.body.id
         self.spawn_hidden = self.hidden = bool(hidden) and self.kinematic
+        self.placed = 0        # times put somewhere by a command (set_model/link_state)
         self._kinematic_pose = [x, y, z, yaw]
         for link, (mu1, mu2) in urdf.gazebo.friction.items():
             if link in self.body.links and mu1 is not None:
@@ -188,6 +189,7 @@ class Model(object):
         """Put the model's URDF root frame at ``position`` (orientation kept if
         None), at rest unless ``twist`` ((linear), (angular), world frame)
         is given. A kinematic body below the ground (z < 0) is hidden."""
+        self.placed += 1
         if quaternion is None:
             quaternion = self.pose()[1]
         if self.kinematic:

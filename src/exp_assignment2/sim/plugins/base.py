@@ -23,6 +23,11 @@ And the engine calls its hooks, always from the simulation thread:
 * :meth:`Plugin.reset` on reset_world and reset_simulation (time may go back);
 * :meth:`Plugin.close` when the model is deleted or the engine closes.
 
+And it answers two questions of a grader's (the ground truth,
+:mod:`exp_assignment2.sim.model_facts`): :meth:`Plugin.facts`, what it is
+(its file, the sensor it sits in, the topic it takes commands on), and
+:attr:`Plugin.commands_taken`, how many commands it has taken so far.
+
 A plugin touches nothing else: callbacks from other threads (ROS
 subscribers) hand work to the simulation thread with ``call_soon``.
 """
@@ -189,3 +194,17 @@ class Plugin(object):
 
     def close(self):
         """The model is deleted or the engine closes: release everything."""
+
+    def facts(self):
+        """What the plugin is, as plain data: its file and name, the sensor it
+        sits in (type, name, link); subclasses add what they take commands on."""
+        out = {'file': self.filename, 'name': self.name}
+        if self.sensor is not None:
+            out['sensor'] = {'type': self.sensor.type, 'name': self.sensor.name,
+                             'link': self.sensor.link}
+        return out
+
+    @property
+    def commands_taken(self):
+        """Commands taken from outside so far (a drive's velocity commands)."""
+        return 0

@@ -115,6 +115,11 @@ class CameraPlugin(Plugin):
             'camera.worker', lambda: FrameWorker(self.engine.settings.get('renderer', 'gl'),
                                                  self.engine))
 
+    def facts(self):
+        """Its sensor, with the name its frames carry (``<model>/<cameraName>``) and
+        its compressed topic."""
+        return dict(Plugin.facts(self), camera=self.spec.name, image=self.jpeg.pub.resolved_name)
+
     def _watch(self):
         if self.on_subscribed is not None and self.wanted():
             self.on_subscribed()

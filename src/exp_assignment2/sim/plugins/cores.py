@@ -45,7 +45,23 @@ def velocity_command(plugin):
                            cmd_timeout=float(settings.get('cmd_timeout', 0.5)))
 
 
-class DiffDriveCore(Plugin):
+class DriveCore(Plugin):
+    """What the drive plugins share: the velocity command they take, on their
+    ``commandTopic`` (default ``cmd_vel``) under the robot namespace."""
+
+    def command_topic(self):
+        return self.topic(self.options.text('commandTopic', 'cmd_vel'))
+
+    def facts(self):
+        return dict(Plugin.facts(self), drive=True, command=self.command_topic(),
+                    joints=list(getattr(self.drive, 'joints', ())))
+
+    @property
+    def commands_taken(self):
+        return self.command.taken
+
+
+class DiffDriveCore(DriveCore):
     """``libgazebo_ros_diff_drive.so`` without ROS: leftJoint, rightJoint,
     wheelSeparation, wheelDiameter, wheelTorque, updateRate, odometrySource
     (world|encoder). ``legacyMode`` is accepted and, as in Noetic, not read:
@@ -106,7 +122,7 @@ class DiffDriveCore(Plugin):
         self.encoder_pose = [0.0, 0.0, 0.0]
 
 
-class PlanarMoveCore(Plugin):
+class PlanarMoveCore(DriveCore):
     """``libgazebo_ros_planar_move.so`` without ROS: the command is in the
     body's frame (x, y, yaw rate), applied every step."""
 

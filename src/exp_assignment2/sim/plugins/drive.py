@@ -42,8 +42,7 @@ class DiffDrivePlugin(DiffDriveCore):
             joint_claims(self.engine, self.topic('joint_states'))[self] = set(self.drive.joints)
         self.wheel_tf = (rospy.Publisher('/tf', TFMessage, queue_size=100)
                          if o.boolean('publishWheelTF', False) else None)
-        self.cmd = CommandTopic(self, self.topic(o.text('commandTopic', 'cmd_vel')),
-                                self.command)
+        self.cmd = CommandTopic(self, self.command_topic(), self.command)
         rospy.set_param(self.topic('turn_sign'), self.drive.turn_sign())
 
     def on_update(self):
@@ -101,8 +100,7 @@ class PlanarMovePlugin(PlanarMoveCore):
                                           o.text('odometryFrame', 'odom'),
                                           o.text('robotBaseFrame', 'base_footprint'),
                                           tf=o.boolean('publishOdometryTf', True))
-        self.cmd = CommandTopic(self, self.topic(o.text('commandTopic', 'cmd_vel')),
-                                self.command)
+        self.cmd = CommandTopic(self, self.command_topic(), self.command)
 
     def after_step(self):
         if self.every.due():
