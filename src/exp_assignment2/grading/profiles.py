@@ -1,6 +1,7 @@
 """Assignment profiles: what "works" means, as data (config/grading/*.yaml).
 
-A profile names the world's robot and ball, the default start commands, the
+A profile names the world's robot and ball (a first choice: a run whose models
+are called otherwise is judged by their roles, :mod:`.roles`), the default start commands, the
 duration, the limits of a run and its checks (a metric of
 :mod:`exp_assignment2.grading.metrics` with thresholds, and the rubric's
 ``points``, ``zero`` and ``visibility``: :mod:`exp_assignment2.grading.scores`).
@@ -17,12 +18,13 @@ from exp_assignment2.grading.scores import check_spec
 
 REQUIRED = ('name', 'duration', 'default_commands', 'robot', 'checks')
 KEYS = {'name', 'title', 'duration', 'default_commands', 'world_commands', 'delay', 'cpu_per_run',
-        'memory_limit_mb', 'process_limit', 'robot', 'ball', 'camera', 'record_topics',
-        'checks'}
+        'memory_limit_mb', 'process_limit', 'robot', 'ball', 'ball_radius', 'camera',
+        'record_topics', 'checks'}
 CHECK_KEYS = {'name', 'metric', 'min', 'max', 'reach', 'joint', 'topic', 'tolerance',
               'points', 'zero', 'visibility'}      # the last three: the rubric (grading.scores)
 DEFAULTS = {'title': '', 'world_commands': [], 'delay': 5, 'cpu_per_run': 1.0, 'memory_limit_mb': 3000,
-            'process_limit': 512, 'ball': None, 'camera': None, 'record_topics': []}
+            'process_limit': 512, 'ball': None, 'ball_radius': None, 'camera': None,
+            'record_topics': []}
 
 
 class ProfileError(Exception):
@@ -79,6 +81,13 @@ def check(data, where='profile'):
     if not (isinstance(profile['world_commands'], list)
             and all(isinstance(c, str) for c in profile['world_commands'])):
         raise ProfileError('%s: world_commands: a list of command lines' % where)
+    radius = profile['ball_radius']
+    if radius is not None and not (
+            isinstance(radius, list) and len(radius) == 2 and all(
+                isinstance(v, number) and not isinstance(v, bool) for v in radius)
+            and 0 < radius[0] <= radius[1]):
+        raise ProfileError('%s: ball_radius: %r is not [min, max] in m, 0 < min <= max'
+                           % (where, radius))
     if not isinstance(profile['checks'], list) or not profile['checks']:
         raise ProfileError('%s: checks: a list of checks' % where)
     for i, item in enumerate(profile['checks']):

@@ -24,8 +24,10 @@ keys, those of a run that did not run left out:
   ``peak_memory_mb``, ``oom``, ``all_gone``, ``sandbox_exit``, ``cut``;
 * the verdict (:mod:`exp_assignment2.grading.verdicts`): ``verdict``,
   ``reason``, ``checks`` (of a crashed or timed-out run too, with ``checks_until``
-  naming its verdict: judged on the truth until its end), ``errors``, ``error_count``, ``died``,
-  ``launch_errors``.
+  naming its verdict: judged on the truth until its end; a check not run has ``judged``
+  False and ``passed`` None), ``errors``, ``error_count``, ``died``, ``launch_errors``,
+  ``roles`` (the robot, head, camera and ball judged, each with why:
+  :mod:`exp_assignment2.grading.roles`).
 """
 import json
 import os

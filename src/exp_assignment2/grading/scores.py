@@ -13,6 +13,11 @@ checks' points, except:
   truth recorded until the end (the verdict keeps the checks of such runs);
 * ``grader_error``: no score (None): the run must be made again, it is never 0.
 
+A check the grader could not run (a robot, head or ball it needs could not be
+told: :mod:`exp_assignment2.grading.roles`) earns no points and loses none:
+its ``points`` are None, its points are the run's ``pending`` ones, to be
+marked by hand, and the score says so.
+
 Over repeats, a submission's score is the median (the lower middle one for an
 even number, so that it is a run's and its checks' points add up to it).
 """
@@ -57,13 +62,17 @@ def run_score(run, profile):
     verdict, top = run.get('verdict'), maximum(profile)
     specs = profile['checks']
     checks = []
+    got = run.get('checks') or []
     for i, spec in enumerate(specs):
-        got = (run.get('checks') or [])
-        value = got[i]['value'] if i < len(got) and got[i]['name'] == spec['name'] else None
+        mine = got[i] if i < len(got) and got[i]['name'] == spec['name'] else {}
+        unjudged = verdict not in ZERO and mine and mine.get('passed', False) is None
         checks.append({'name': spec['name'], 'max_points': float(spec.get('points') or 0),
                        'visibility': spec.get('visibility', 'visible'),
-                       'points': None if verdict in NO_SCORE else
-                       0.0 if verdict in ZERO or i >= len(got) else check_points(spec, value)})
+                       'points': None if verdict in NO_SCORE or unjudged else
+                       0.0 if verdict in ZERO or i >= len(got) else
+                       check_points(spec, mine.get('value'))})
+        if unjudged:
+            checks[-1]['pending'] = True
     if verdict in NO_SCORE:
         return {'score': None, 'max': top, 'checks': checks,
                 'why': 'no score: the grader failed (%s); the run must be made again'
@@ -71,14 +80,21 @@ def run_score(run, profile):
     if verdict in ZERO:
         return {'score': 0.0, 'max': top, 'checks': checks,
                 'why': '%s: %s' % (verdict.replace('_', ' '), run.get('reason') or '')}
-    score = round(sum(c['points'] for c in checks), 2)
+    score = round(sum(c['points'] for c in checks if c['points'] is not None), 2)
     why = ''
     if verdict in KEPT:
         why = ('%s: the points its checks earned from what the robot did until then'
                % verdict.replace('_', ' ')) if run.get('checks') else \
             '%s before the simulator reported anything: no check could earn points' % \
             verdict.replace('_', ' ')
-    return {'score': score, 'max': top, 'checks': checks, 'why': why}
+    pending = [c for c in checks if c.get('pending')]
+    out = {'score': score, 'max': top, 'checks': checks, 'why': why}
+    if pending:
+        out['pending'] = sum(c['max_points'] for c in pending)
+        out['why'] = '; '.join(filter(None, (why, '%g points not judged by the grader (%s): '
+                                             'to be marked by hand' % (out['pending'], ', '.join(
+                                                 c['name'] for c in pending)))))
+    return out
 
 
 def median_run(scored):

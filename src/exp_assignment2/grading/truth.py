@@ -15,6 +15,7 @@ frames to ``frames/`` as JPEG files, and twice a wall second a pair of
 times (its windows' pictures) to simulated time.
 """
 import base64
+import collections
 import json
 import os
 import socket
@@ -160,12 +161,16 @@ class TruthServer(object):
             pass
 
 
+TruthRecord = collections.namedtuple('TruthRecord', 'states topics hello models')
+
+
 def read_record(record_dir):
-    """(states, topics, hello) of a run's truth.jsonl."""
-    states, topics, hello = [], [], None
+    """The :class:`TruthRecord` of a run's truth.jsonl: its states, topics, hello,
+    and what the simulator said of each model (name -> its last facts)."""
+    states, topics, hello, models = [], [], None, {}
     path = os.path.join(record_dir, 'truth.jsonl')
     if not os.path.exists(path):
-        return states, topics, hello
+        return TruthRecord(states, topics, hello, models)
     with open(path, errors='replace') as f:
         for line in f:
             try:
@@ -180,4 +185,14 @@ def read_record(record_dir):
                 topics.append((record.get('t', 0.0), record.get('topic'), record.get('msg')))
             elif kind == 'hello':
                 hello = record
-    return states, topics, hello
+            elif kind == 'model' and isinstance(record.get('facts'), dict) and \
+                    isinstance(record['facts'].get('name'), str):
+                models[record['facts']['name']] = record['facts']
+    return TruthRecord(states, topics, hello, models)
+
+
+def trace_of(record_dir, errors=()):
+    """The run's :class:`~.metrics.Trace`, from its record."""
+    from exp_assignment2.grading.metrics import Trace
+    found = read_record(record_dir)
+    return Trace(found.states, found.topics, errors, found.models)

@@ -39,7 +39,8 @@ import os
 
 from exp_assignment2.grading import logs as logs_
 from exp_assignment2.grading import metrics
-from exp_assignment2.grading.truth import read_record
+from exp_assignment2.grading import roles as roles_
+from exp_assignment2.grading.truth import trace_of
 
 VERDICTS = ('passed', 'failed_checks', 'crashed', 'timed_out', 'not_started', 'not_built',
             'grader_error')
@@ -62,6 +63,7 @@ class Seen(object):
         self.died, self.errors = list(died), list(errors)
         self.started_nothing, self.launch_errors = list(started_nothing), list(launch_errors)
         self._checks = checks
+        self.roles = None          # grading.roles.Roles, once the checks were judged
 
     @property
     def checks(self):
@@ -116,7 +118,18 @@ def _death_reason(s):
 
 
 def _failed_names(s):
-    return [c['name'] for c in s.checks or () if not c['passed']]
+    return [c['name'] for c in s.checks or () if c['passed'] is False]
+
+
+def _checks_reason(s):
+    """Which checks failed, and which were not run (their role could not be told)."""
+    parts = []
+    if _failed_names(s):
+        parts.append('failed: ' + ', '.join(_failed_names(s)))
+    unjudged = [c['name'] for c in s.checks or () if c['passed'] is None]
+    if unjudged:
+        parts.append('not judged: ' + ', '.join(unjudged))
+    return '; '.join(parts)
 
 
 RULES = (
@@ -154,9 +167,8 @@ RULES = (
     Rule('timed_out', 'wall-clock limit', lambda s: s.ran and s.ended_by == 'wall_limit',
          lambda s: '%.0f of %.0f simulated s within the wall-clock limit' % (s.sim_time,
                                                                             s.duration)),
-    Rule('failed_checks', 'a check failed', lambda s: bool(_failed_names(s)),
-         lambda s: 'failed: ' + ', '.join(_failed_names(s))),
-    Rule('passed', 'every check passed', lambda s: True, lambda s: ''),
+    Rule('failed_checks', 'a check failed', lambda s: bool(_failed_names(s)), _checks_reason),
+    Rule('passed', 'every check passed', lambda s: True, _checks_reason),
 )
 
 
@@ -242,8 +254,9 @@ def gather(work, record_dir, result, profile):
     seen.started_nothing = [(command, line) for _, _, command, line in sorted(nothing)]
 
     def checks():
-        found, topics, _ = read_record(record_dir)
-        return metrics.evaluate(metrics.Trace(found, topics, seen.errors), profile)
+        trace = trace_of(record_dir, seen.errors)
+        seen.roles = roles_.find(trace, profile)
+        return metrics.evaluate(trace, profile, seen.roles)
     seen._checks = checks if states else None
     return seen
 
@@ -262,4 +275,6 @@ def judge(work, record_dir, result, profile):
         # judged from the ground truth recorded until the end: the points earned so far
         out['checks'] = seen.checks
         out['checks_until'] = verdict
+    if seen.roles is not None:        # which robot, head, camera and ball were judged, and why
+        out['roles'] = seen.roles.to_dict()
     return out

@@ -1,0 +1,188 @@
+"""The robot, its head, its camera and the ball found by their roles, whatever
+the student named them (grading.roles), and judged as such (grading.metrics,
+scores): on hand-made records shaped like the simulator's (sim.model_facts)."""
+import math
+
+from exp_assignment2.grading import metrics, profiles, roles, scores
+
+DOG = profiles.load('dog')
+
+
+def joint(kind, parent, child, axis=None):
+    return {'type': kind, 'parent': parent, 'child': child, 'axis': axis}
+
+
+def robot_facts(name='robot2', namespace='robot2', head='camera_joint', camera=True,
+                head_type='revolute', axis=(0.0, 0.0, 1.0)):
+    """A dog as students build it: wheels, a neck, a head on ``head``, a camera on it."""
+    facts = {'name': name, 'namespace': namespace, 'root': 'link_chassis', 'static': False,
+             'kinematic': False, 'sphere': None, 'colour': None,
+             'links': ['link_chassis', 'link_left_wheel', 'link_right_wheel', 'link_neck',
+                       'link_head', 'camera_link'],
+             'joints': {'joint_left_wheel': joint('continuous', 'link_chassis',
+                                                  'link_left_wheel', [0.0, 1.0, 0.0]),
+                        'joint_right_wheel': joint('continuous', 'link_chassis',
+                                                   'link_right_wheel', [0.0, 1.0, 0.0]),
+                        'joint_neck': joint('fixed', 'link_chassis', 'link_neck'),
+                        head: joint(head_type, 'link_neck', 'link_head',
+                                    list(axis) if head_type != 'fixed' else None),
+                        'joint_camera': joint('fixed', 'link_head', 'camera_link')},
+             'sensors': [], 'plugins': [
+                 {'file': 'libgazebo_ros_diff_drive.so', 'name': 'drive', 'drive': True,
+                  'command': '/%s/cmd_vel' % namespace,
+                  'joints': ['joint_left_wheel', 'joint_right_wheel']}]}
+    if camera:
+        facts['sensors'] = [{'type': 'camera', 'name': 'camera1', 'link': 'camera_link'}]
+        facts['plugins'].append({'file': 'libgazebo_ros_camera.so', 'name': 'cam',
+                                 'sensor': facts['sensors'][0], 'camera': 'camera1',
+                                 'image': '/%s/camera1/image_raw/compressed' % namespace})
+    return facts
+
+
+def ball_facts(name='toy', plugins=True):
+    return {'name': name, 'namespace': name, 'root': 'ball_link', 'static': False,
+            'kinematic': True, 'sphere': 0.5, 'colour': [0, 0.8, 0, 1], 'links': ['ball_link'],
+            'joints': {}, 'sensors': [], 'plugins': [
+                {'file': 'libgazebo_ros_planar_move.so', 'name': 'move', 'drive': True,
+                 'command': '/%s/cmd_vel' % name, 'joints': []}] if plugins else []}
+
+
+def person_facts():
+    """A second robot-like model: a person on wheels nobody drives, with no camera."""
+    facts = robot_facts(name='person', namespace='person', camera=False)
+    return facts
+
+
+def states(robot='robot2', ball='toy', head='camera_joint', wiggle=0.8, fed=None, placed=None,
+           until=30.0, extra=None):
+    """The robot drives to 1.5 m of the ball by t = 10 s, then turns its head."""
+    out = []
+    for i in range(int(until * 10) + 1):
+        t = i / 10.0
+        x = min(2.5, 2.5 * t / 10.0)
+        models = {robot: [x, 0.0, 0.1, 0.0], ball: [4.0, 0.0, 0.5, 0.0]}
+        models.update(extra or {})
+        state = {'t': t, 'models': models,
+                 'joints': {robot: {head: wiggle * math.sin(t) if t > 10 else 0.0,
+                                    'joint_left_wheel': t, 'joint_right_wheel': t}}}
+        state['fed'] = dict(fed if fed is not None else {robot: 10 * i, ball: 0})
+        if placed:
+            state['placed'] = dict(placed)
+        out.append(state)
+    return out
+
+
+def trace_of(facts, **kwargs):
+    return metrics.Trace(states(**kwargs), models={f['name']: f for f in facts})
+
+
+def outcome(trace, profile=DOG):
+    found = roles.find(trace, profile)
+    return found, {c['metric']: (c['value'], c['passed'])
+                   for c in metrics.evaluate(trace, profile, found)}
+
+
+def test_a_renamed_robot_head_and_ball_are_found_by_their_roles():
+    """robot2 in its own namespace, its head on camera_joint, the ball called toy:
+    judged as the robot, head and ball the profile calls robot, head and ball."""
+    trace = trace_of([robot_facts(), ball_facts(), person_facts()],
+                     fed={'robot2': 900, 'toy': 40}, extra={'person': [-7, 7, 0, 0]})
+    found, got = outcome(trace)
+    assert (found.robot.name, found.head.name, found.camera.name, found.ball.name) == (
+        'robot2', 'camera_joint', 'robot2/camera1', 'toy')
+    assert found.namespace == 'robot2'
+    assert found.robot.why == ('`robot2`: driven through /robot2/cmd_vel (900 commands) and '
+                               'carries camera `camera1` (no model `robot`)')
+    assert found.head.why == ('`camera_joint`, the joint that turns camera `camera1` (on '
+                              '`camera_link`)')
+    assert found.ball.why.startswith('`toy`: moved through /toy/cmd_vel (40 commands)')
+    assert got == {'approaches': (1, True), 'first_approach_time': (8.0, True),
+                   'head_turn_near_ball': (1.6, True), 'path_length': (2.5, True),
+                   'python_errors': (0, True)}
+
+
+def test_the_profiles_names_come_first():
+    """A model called robot is the robot, even beside another that is driven more."""
+    trace = trace_of([robot_facts(name='robot', namespace='robot', head='joint_head'),
+                      robot_facts(name='rover', namespace='rover'), ball_facts(name='ball')],
+                     robot='robot', ball='ball', head='joint_head',
+                     fed={'robot': 5, 'rover': 5000})
+    found, got = outcome(trace)
+    assert (found.robot.name, found.head.name, found.ball.name) == ('robot', 'joint_head', 'ball')
+    assert found.robot.why == '`robot`, as the profile names it'
+    assert found.head.why == '`joint_head`, named like `head` as the profile asks'
+    assert got['head_turn_near_ball'] == (1.6, True)
+
+
+def test_the_person_is_not_the_robot_and_the_ball_is_the_sphere():
+    """Nothing drove anything yet: the robot is the one with the camera; the
+    ball is the sphere no command moved (the ball server never ran)."""
+    trace = trace_of([person_facts(), robot_facts(name='dog', namespace=''),
+                      ball_facts(name='green', plugins=False)],
+                     robot='dog', ball='green', fed={}, extra={'person': [-7, 7, 0, 0]})
+    found, _ = outcome(trace)
+    assert (found.robot.name, found.ball.name) == ('dog', 'green')
+    assert found.ball.why == '`green`: a sphere of radius 0.5 m (no model `ball`)'
+    assert found.namespace == ''
+
+
+def test_a_camera_fixed_to_a_robot_with_no_other_joint_is_no_head():
+    """The thing is absent: the check fails, saying so."""
+    trace = trace_of([robot_facts(head_type='fixed'), ball_facts()])
+    found, got = outcome(trace)
+    assert found.head.name is None and found.head.absent
+    assert got['head_turn_near_ball'] == (None, False)
+    detail = next(c['detail'] for c in metrics.evaluate(trace, DOG, found)
+                  if c['metric'] == 'head_turn_near_ball')
+    assert detail == ('camera `camera1` on `camera_link` is fixed and no joint but the wheels '
+                      'moves: `robot2` has no head')
+
+
+def test_a_head_that_cannot_be_told_is_not_judged_and_its_points_wait_for_a_person():
+    """The camera is fixed to the chassis and another joint turns something else:
+    a person must look. The check is not run, neither passed nor failed; its
+    points are pending; the verdict's reason says which was not judged."""
+    facts = robot_facts(head_type='fixed')
+    facts['joints']['flag_joint'] = joint('revolute', 'link_chassis', 'flag', [0, 0, 1])
+    trace = trace_of([facts, ball_facts()])
+    found, got = outcome(trace)
+    assert found.head.name is None and not found.head.absent
+    assert 'which is the head cannot be told' in found.head.why
+    assert got['head_turn_near_ball'] == (None, None)
+    assert got['approaches'] == (1, True)
+    checks = metrics.evaluate(trace, DOG, found)
+    head = next(c for c in checks if c['metric'] == 'head_turn_near_ball')
+    assert head['judged'] is False and head['detail'].startswith('not judged: no joint turns')
+    marks = scores.run_score({'verdict': 'passed', 'checks': checks}, DOG)
+    assert marks['score'] == 75.0 and marks['pending'] == 25.0
+    assert 'not judged by the grader (head turns at the ball)' in marks['why']
+    head_marks = next(c for c in marks['checks'] if c['name'] == 'head turns at the ball')
+    assert head_marks['points'] is None and head_marks['pending']
+
+
+def test_no_robot_in_the_world_fails_what_needs_one():
+    trace = metrics.Trace([{'t': t / 10.0, 'models': {'kennel': [7, 7, 0, 0]}, 'joints': {}}
+                           for t in range(50)],
+                          models={'kennel': dict(ball_facts('kennel', plugins=False),
+                                                 static=True, sphere=None)})
+    found, got = outcome(trace)
+    assert found.robot.name is None and found.robot.absent
+    assert got['path_length'] == (None, False) and got['approaches'] == (None, False)
+
+
+def test_a_relative_topic_is_the_judged_robots():
+    """A check's topic without a leading slash is under the robot's namespace."""
+    profile = dict(DOG, checks=[{'name': 'goals', 'metric': 'arrivals', 'topic': 'goal',
+                                 'tolerance': 0.5, 'min': 1}])
+    trace = trace_of([robot_facts(), ball_facts()])
+    trace.topics = [(1.0, '/robot2/goal', {'data': [2.5, 0.0]}),
+                    (2.0, '/goal', {'data': [9.0, 9.0]})]
+    _, got = outcome(trace, profile)
+    assert got['arrivals'] == (1, True)
+
+
+def test_roles_travel_in_the_run_record():
+    trace = trace_of([robot_facts(), ball_facts()])
+    found = roles.find(trace, DOG)
+    again = roles.of_run({'roles': found.to_dict()}, metrics.Trace(), DOG)
+    assert again.to_dict() == found.to_dict() and again.head.name == 'camera_joint'
