@@ -22,7 +22,8 @@ EXPECTED = {'works': 'passed', 'tabs': 'passed', 'cpp_broken': 'not_built',
             'raises': 'crashed', 'idle': 'failed_checks', 'hostile': None,
             'zipped': 'passed', 'tarred': 'passed', 'old_names': 'passed',
             'own_world': 'passed', 'alternatives': 'passed', 'other_name': 'passed',
-            'missing_node': 'passed', 'imshow': 'passed'}
+            'missing_node': 'passed', 'imshow': 'passed', 'renamed': 'passed',
+            'tutorials': 'passed'}
 
 RAISES = '''#!/usr/bin/env python3
 import rospy
@@ -391,6 +392,56 @@ def _own_world(dest):
         f.write(OWN_WORLD_README)
 
 
+# Students rename things: the robot spawned as robot2 in its own namespace, its
+# head turning on camera_joint moved by a camera_position_controller, the ball
+# called toy. A teacher watching sees the dog play: judged by their roles.
+RENAMED = (('joint_head_controller', 'camera_position_controller'),
+           ('joint_head', 'camera_joint'), ('/robot/', '/robot2/'),
+           ('ns="/robot"', 'ns="/robot2"'), ('name="robot/robot_description"',
+                                             'name="robot2/robot_description"'),
+           ('<group ns="robot">', '<group ns="robot2">'), ('-model robot ', '-model robot2 '),
+           ('--namespace=/robot ', '--namespace=/robot2 '), ('-model ball ', '-model toy '))
+
+
+def _renamed(dest):
+    changed = []
+    for rel in (LAUNCH, DOG, 'urdf/robot.xacro', 'config/motors_config.yaml'):
+        path = os.path.join(dest, rel)
+        with open(path) as f:
+            text = f.read()
+        for old, new in RENAMED:
+            text = text.replace(old, new)
+        changed.append(text)
+        with open(path, 'w') as f:
+            f.write(text)
+    assert 'robot2' in changed[0] and '-model toy' in changed[0] and 'joint_head' not in \
+        ''.join(changed), changed[0]
+
+
+# A node that imports what ROS Noetic's desktop-full had and Debian's ROS has
+# not: actionlib_tutorials' messages (a tutorial's client the student kept)
+TUTORIALS_IMPORT = """import actionlib_tutorials.msg
+from geometry_msgs.msg import Twist
+"""
+
+
+def _tutorials(dest):
+    path = os.path.join(dest, DOG)
+    with open(path) as f:
+        text = f.read()
+    text = text.replace('from geometry_msgs.msg import Twist\n', TUTORIALS_IMPORT).replace(
+        "    rospy.init_node('dog')\n", "    rospy.init_node('dog')\n"
+        "    GOAL = actionlib_tutorials.msg.FibonacciGoal(order=5)\n")
+    assert text.count('actionlib_tutorials') == 2
+    _replace(dest, DOG, text)
+    path = os.path.join(dest, 'package.xml')
+    with open(path) as f:
+        text = f.read()
+    with open(path, 'w') as f:
+        f.write(text.replace('</package>', '  <exec_depend>actionlib_tutorials</exec_depend>\n'
+                                           '</package>'))
+
+
 MIRO_ORIGINAL = os.path.join(HERE, 'fixtures', 'miro_original')
 MIRO_README = """# MiRo
 
@@ -479,6 +530,10 @@ def make_folder(dest, names=None):
             _replace(package, 'README.md', OTHER_NAME)
         elif name == 'imshow':
             _imshow(package)
+        elif name == 'renamed':
+            _renamed(package)
+        elif name == 'tutorials':
+            _tutorials(package)
     shutil.rmtree(scratch, ignore_errors=True)
     return dest
 

@@ -13,6 +13,7 @@ import html
 import os
 import re
 
+from exp_assignment2.grading import report_judged
 from exp_assignment2.grading.report_marks import _number
 
 WORDS = {
@@ -32,7 +33,7 @@ RUN_PATH = re.compile(r'(/[^\s"\'<>:]*)?/runs/[^/\s"\']+/work/(overlay/[^/\s"\']
 STYLE = '''body{font-family:sans-serif;margin:1.5em;color:#222;max-width:60em}
 table{border-collapse:collapse}th,td{border:1px solid #ccc;padding:4px 8px;font-size:13px;
 vertical-align:top}th{background:#eee}pre{background:#f6f6f6;padding:8px;overflow-x:auto;
-font-size:12px;max-height:30em}.fail{color:#c62828}.ok{color:#2e7d32}img{border:1px solid #ddd;
+font-size:12px;max-height:30em}.fail{color:#c62828}.ok{color:#2e7d32}.nj{color:#8a6d3b}img{border:1px solid #ddd;
 max-width:100%}.score{font-size:1.6em}'''
 
 
@@ -106,7 +107,7 @@ def to_fix(summary, run, clean):
             run.get('error_count', len(errors)), _e(clean(first['source'])), _e(first['line']),
             _e(clean(first['summary'])), _e(clean(first['excerpt']))))
     for check in visible_checks(summary):
-        if not check['passed']:
+        if check['passed'] is False:
             items.append('The check &ldquo;%s&rdquo; needs %s; your run gave %s (%s).' % (
                 _e(check['name']), _e(check['threshold']), _e(_value(check['value'])),
                 _e(clean(check['detail']))))
@@ -125,9 +126,12 @@ def _score_part(summary):
         c.get('visibility') == 'hidden' for c in summary.get('score_checks') or [])
     if summary.get('score') is None:
         return '<p class="score">No score yet</p>'
+    by_hand = ('<p>%s points are for your teacher to mark by hand: the grader could not '
+               'judge those checks (see below).</p>' % _number(summary['pending'])
+               if summary.get('pending') else '')
     if not hidden:
-        return '<p class="score">Score: <b>%s</b> / %s</p>' % (_number(summary['score']),
-                                                                _number(summary['max']))
+        return '<p class="score">Score: <b>%s</b> / %s</p>%s' % (
+            _number(summary['score']), _number(summary['max']), by_hand)
     got = [c for c in summary.get('score_checks') or [] if c.get('visibility') != 'hidden']
     return ('<p class="score">Points from the checks shown here: <b>%s</b> / %s</p><p>Your '
             'teacher grades further checks that are not shown here.</p>' % (
@@ -150,14 +154,16 @@ def page(summary, run, pictures, profile, clean):
         parts.append('<h2>Checks</h2><table><tr><th>check</th><th>your figure</th>'
                      '<th>needed</th><th></th><th>points</th><th>detail</th></tr>')
         for c in shown:
+            css, word = report_judged.outcome(c)
             parts.append('<tr><td>%s</td><td>%s</td><td>%s</td><td class="%s">%s</td>'
                          '<td>%s / %s</td><td>%s</td></tr>' % (
-                             _e(c['name']), _e(_value(c['value'])), _e(c['threshold']),
-                             'ok' if c['passed'] else 'fail',
-                             'met' if c['passed'] else 'not met',
+                             _e(c['name']), _e(_value(c['value'])), _e(c['threshold']), css,
+                             {'passed': 'met', 'failed': 'not met'}.get(
+                                 word, 'not judged: your teacher marks it'),
                              _e(_number(c.get('points')) or '—'),
                              _e(_number(c.get('max_points'))), _e(clean(c['detail']))))
         parts.append('</table>')
+    parts += report_judged.judged_section(run, 'What the grader judged')
     parts.append('<h2>How it was started</h2><pre>%s</pre>' % _e(clean(
         '\n'.join(run.get('commands') or []))))
     pics = [(k, pictures.get(k)) for k in ('top', 'head')] + \

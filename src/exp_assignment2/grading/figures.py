@@ -1,7 +1,8 @@
 """A run's pictures for its report page (matplotlib, no display, no ROS):
 the arena from above with the robot's and the ball's paths, and the head's
-angle over time. Each returns the file it wrote, or None when the ground
-truth holds nothing to draw."""
+angle over time, of the robot, head and ball judged (``roles``:
+:mod:`exp_assignment2.grading.roles`, whatever the student named them). Each
+returns the file it wrote, or None when the ground truth holds nothing to draw."""
 import math
 import os
 
@@ -25,14 +26,14 @@ def _segments(points):
     return runs
 
 
-def top_view(trace, profile, path, size=(4.2, 4.2)):
-    robot = trace.xy(profile['robot'])
-    ball = trace.xy(profile['ball']) if profile.get('ball') else []
+def top_view(trace, roles, path, size=(4.2, 4.2)):
+    robot = trace.xy(roles.robot.name) if roles.robot.name else []
+    ball = trace.xy(roles.ball.name) if roles.ball.name else []
     if not robot and not ball:
         return None
     fig, ax = plt.subplots(figsize=size, dpi=100)
-    for points, colour, label in ((ball, '#2ca02c', profile.get('ball')),
-                                  (robot, '#d62728', profile['robot'])):
+    for points, colour, label in ((ball, '#2ca02c', roles.ball.name),
+                                  (robot, '#d62728', roles.robot.name)):
         for i, run in enumerate(_segments(points)):
             xs, ys = zip(*run)
             ax.plot(xs, ys, color=colour, lw=1.5, label=label if i == 0 else None)
@@ -55,12 +56,12 @@ def top_view(trace, profile, path, size=(4.2, 4.2)):
     return path
 
 
-def head_angle(trace, profile, path, joint='head', size=(5.0, 2.4)):
-    name, angles = trace.joint(profile['robot'], joint)
+def head_angle(trace, roles, path, size=(5.0, 2.4)):
+    robot, name = roles.robot.name, roles.head.name
+    angles = trace.angles(robot, name) if robot and name else []
     if not angles:
         return None
-    distances = trace.distances(profile['robot'], profile['ball']) \
-        if profile.get('ball') else []
+    distances = trace.distances(robot, roles.ball.name) if roles.ball.name else []
     fig, ax = plt.subplots(figsize=size, dpi=100)
     ts, values = zip(*angles)
     ax.plot(ts, [math.degrees(v) for v in values], color='#9467bd', lw=1.2, label=name)
@@ -97,22 +98,27 @@ def frame_time(path):
         return None
 
 
-def chosen_frames(record_dir, trace, profile):
-    """{moment: frame file} for the first sight of the ball, the closest
-    approach and the end, in that order (frames: ``record/frames/<camera>_<t>.jpg``)."""
+def chosen_frames(record_dir, trace, roles):
+    """{moment: frame file} of the robot's camera for the first sight of the ball,
+    the closest approach and the end, in that order (frames:
+    ``record/frames/<camera>_<t>.jpg``, ``<camera>`` the model's and camera's
+    names; every camera's when the robot's cannot be told)."""
     directory = os.path.join(record_dir, 'frames')
     if not os.path.isdir(directory):
         return {}
+    prefix = roles.camera.name.replace('/', '_') + '_' if roles.camera.name else ''
     frames = []
     for name in sorted(os.listdir(directory)):
         t = frame_time(name)
-        if t is not None:
+        # '<model>_<camera>_<t>.jpg': the rest after the prefix is the time alone
+        if t is not None and name.startswith(prefix) and \
+                not (prefix and '_' in name[len(prefix):]):
             frames.append((t, os.path.join(directory, name)))
     if not frames:
         return {}
     frames.sort()
     chosen = {}
-    if profile.get('ball'):
+    if roles.ball.name:
         from exp_assignment2.vision import BallDetector
         import cv2
         detector = BallDetector()
@@ -121,7 +127,8 @@ def chosen_frames(record_dir, trace, profile):
             if image is not None and detector.detect(image) is not None:
                 chosen['first sight of the ball'] = path
                 break
-        distances = trace.distances(profile['robot'], profile['ball'])
+        distances = trace.distances(roles.robot.name, roles.ball.name) \
+            if roles.robot.name else []
         if distances:
             t_close = min(distances, key=lambda d: d[1])[0]
             chosen['closest approach'] = min(frames, key=lambda f: abs(f[0] - t_close))[1]

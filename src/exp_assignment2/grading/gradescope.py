@@ -43,6 +43,9 @@ def _test_output(check, clean):
     value = check['value']
     figure = 'no figure' if value is None else ('%.3g' % value if isinstance(value, float)
                                                 else str(value))
+    if check['passed'] is None:          # a role it needs could not be told: a person marks it
+        return 'not judged by the grader; your teacher marks it by hand (%s)' % clean(
+            check.get('detail') or '')
     return '%s: %s (needed %s)%s' % ('met' if check['passed'] else 'not met', figure,
                                      check['threshold'],
                                      '; ' + clean(check['detail']) if check.get('detail') else '')
@@ -63,7 +66,7 @@ def results(summary, run, profile, clean, execution_time=None):
                 'visibility': marks.get('visibility', 'visible'),
                 'output': _test_output(check, clean) if check else
                 'not judged: %s' % summary['verdict'].replace('_', ' ')}
-        if not no_score:
+        if not no_score and not marks.get('pending'):    # a pending one: no score, not a 0
             test['score'] = marks['points'] or 0.0
             test['status'] = 'passed' if check and check['passed'] else 'failed'
         tests.append(test)

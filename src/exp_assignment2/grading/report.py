@@ -15,11 +15,12 @@ import os
 import shutil
 import statistics
 
-from exp_assignment2.grading import feedback, figures, gradescope, metrics, record, \
-    report_failures, report_marks
+from exp_assignment2.grading import feedback, figures, gradescope, record, report_failures, \
+    report_judged, report_marks
+from exp_assignment2.grading import roles as roles_
 from exp_assignment2.grading.logs import read_log
 from exp_assignment2.grading.report_camera import camera_section, window_pictures
-from exp_assignment2.grading.truth import read_record
+from exp_assignment2.grading.truth import trace_of
 from exp_assignment2.grading.verdicts import VERDICTS
 
 COLOURS = {'passed': '#2e7d32', 'failed_checks': '#ef6c00', 'crashed': '#c62828',
@@ -31,7 +32,7 @@ vertical-align:top}th{background:#eee;cursor:pointer}.v{color:#fff;padding:2px 6
 border-radius:3px;white-space:nowrap}pre{background:#f6f6f6;padding:8px;overflow-x:auto;
 font-size:12px;max-height:30em}.fail{color:#c62828}.ok{color:#2e7d32}img{border:1px solid #ddd}
 .frames img{margin-right:6px}.frames img.window{max-width:760px}
-.flaky{background:#fff3cd;padding:1px 4px}'''
+.flaky{background:#fff3cd;padding:1px 4px}.nj{color:#8a6d3b;font-style:italic}'''
 SORT_JS = '''function sortBy(th){var t=th.closest('table'),i=[].indexOf.call(th.parentNode.children,th),
 b=t.tBodies[0],rows=[].slice.call(b.rows),asc=th.dataset.asc!=='1';th.dataset.asc=asc?'1':'0';
 rows.sort(function(x,y){var a=x.cells[i].dataset.key||x.cells[i].textContent,
@@ -69,10 +70,12 @@ def summarise(runs):
         for i, check in enumerate(next((r['checks'] for r in group if r.get('checks')), [])):
             values = [r['checks'][i]['value'] for r in group
                       if r.get('checks') and r['checks'][i]['value'] is not None]
+            judged = [r['checks'][i] for r in group
+                      if r.get('checks') and r['checks'][i].get('passed') is not None]
             checks.append(dict(check, value=statistics.median(values) if values else None,
-                               values=values,
-                               passed=sum(r['checks'][i]['passed'] for r in group
-                                          if r.get('checks')) * 2 > len(group)))
+                               values=values, judged=bool(judged),    # None: never judged
+                               passed=sum(c['passed'] for c in judged) * 2 > len(judged)
+                               if judged else None))
         main = next((r for r in group if r['verdict'] == verdict), group[0])
         out[name] = {'name': name, 'verdict': verdict, 'flaky': len(set(verdicts)) > 1,
                      'verdicts': verdicts, 'checks': checks, 'reason': main.get('reason', ''),
@@ -83,7 +86,7 @@ def summarise(runs):
                          r.get('real_time_factor_asked') or 1.0) for r in group
                          if r.get('real_time_factor') is not None),
                      'seeds': [r.get('seed') for r in group],
-                     'died': main.get('died') or [],
+                     'died': main.get('died') or [], 'roles': main.get('roles') or {},
                      'launch_errors': main.get('launch_errors') or []}
     return out
 
@@ -106,20 +109,18 @@ def _verdict_badge(verdict):
 def _run_pictures(run, runs_dir, img_dir, profile):
     """The run's figures and chosen frames, copied next to its page."""
     record = os.path.join(runs_dir, run['label'], 'record')
-    states, topics, _ = read_record(record)
-    trace = metrics.Trace(states, topics)
+    trace = trace_of(record)
+    roles = roles_.of_run(run, trace, profile)
     label = run['label']
     pictures = {}
-    top = figures.top_view(trace, profile, os.path.join(img_dir, label + '_top.png'))
+    top = figures.top_view(trace, roles, os.path.join(img_dir, label + '_top.png'))
     if top:
         pictures['top'] = top
-    head = figures.head_angle(trace, profile, os.path.join(img_dir, label + '_head.png'),
-                              joint=next((c.get('joint') for c in profile['checks']
-                                          if c.get('joint')), 'head'))
+    head = figures.head_angle(trace, roles, os.path.join(img_dir, label + '_head.png'))
     if head:
         pictures['head'] = head
     frames, times = {}, {}
-    for moment, source in figures.chosen_frames(record, trace, profile).items():
+    for moment, source in figures.chosen_frames(record, trace, roles).items():
         target = os.path.join(img_dir, '%s_%s.jpg' % (label, moment.replace(' ', '_')))
         shutil.copy(source, target)
         frames[moment], times[moment] = target, figures.frame_time(source)
@@ -163,12 +164,12 @@ def _page(summary, runs, runs_dir, pictures, profile):
                      '<th></th><th>points</th><th>detail</th></tr>')
         for check in summary['checks']:
             parts.append('<tr><td>%s</td><td>%s</td><td>%s</td><td class="%s">%s</td>'
-                         '%s<td>%s</td></tr>' % (
+                         '%s<td>%s</td></tr>' % ((
                              _e(check['name']), _e(_figure_value(check['value'])),
-                             _e(check['threshold']), 'ok' if check['passed'] else 'fail',
-                             'passed' if check['passed'] else 'failed',
-                             report_marks.points_cell(check), _e(check['detail'])))
+                             _e(check['threshold'])) + report_judged.outcome(check) + (
+                             report_marks.points_cell(check), _e(check['detail']))))
         parts.append('</table>')
+    parts += report_judged.judged_section(main)
     if pictures.get('top') or pictures.get('head'):
         parts.append('<h2>What happened</h2><p>')
         for key in ('top', 'head'):
@@ -239,9 +240,10 @@ def _index(summaries, pictures, profile, title):
                 parts.append('<td data-key="-1">—</td>')
             else:
                 parts.append('<td class="%s" data-key="%s">%s</td>' % (
-                    'ok' if check['passed'] else 'fail',
+                    report_judged.outcome(check)[0],
                     check['value'] if check['value'] is not None else -1,
-                    _e(_figure_value(check['value']))))
+                    _e(_figure_value(check['value']) if check.get('passed') is not None
+                       else 'not judged')))
         parts.append('<td>%s</td>' % _e(s['reason'][:160]))
         thumb = pictures.get(name, {}).get('thumb')
         parts.append('<td>%s</td></tr>' % ('<img src="pages/img/%s" alt="%s">' % (

@@ -17,7 +17,7 @@ def add_scores(summaries, runs, profile):
         run, marks = chosen
         summary.update(score=marks['score'], max=marks['max'], score_why=marks['why'],
                        score_run=run['label'], score_checks=marks['checks'],
-                       scores=[m['score'] for _, m in scored])
+                       scores=[m['score'] for _, m in scored], pending=marks.get('pending', 0))
         by_name = {c['name']: c for c in marks['checks']}
         for check in summary['checks']:
             check.update({k: v for k, v in by_name.get(check['name'], {}).items()
@@ -32,13 +32,15 @@ def _number(value):
 
 
 def csv_header(profile):
-    """The columns grades.csv gains: after ``flaky``, and after the figures."""
-    return ['score', 'max'], ['%s points' % c['name'] for c in profile['checks']]
+    """The columns grades.csv gains: after ``flaky``, and after the figures
+    (``pending``: points of checks the grader could not run, to mark by hand)."""
+    return ['score', 'max', 'pending'], ['%s points' % c['name'] for c in profile['checks']]
 
 
 def csv_cells(summary, profile):
     points = {c['name']: c['points'] for c in summary.get('score_checks') or []}
-    return ([_number(summary.get('score')), _number(summary.get('max'))],
+    return ([_number(summary.get('score')), _number(summary.get('max')),
+             _number(summary.get('pending') or 0)],
             [_number(points.get(c['name'])) for c in profile['checks']])
 
 
@@ -53,9 +55,11 @@ def score_cell(summary):
     if summary.get('score') is None:
         return '<td data-key="-1" title="%s">no score</td>' % html.escape(
             summary.get('score_why') or '')
-    return '<td data-key="%s" title="%s"><b>%s</b> / %s</td>' % (
+    return '<td data-key="%s" title="%s"><b>%s</b> / %s%s</td>' % (
         summary['score'], html.escape(summary.get('score_why') or ''),
-        _number(summary['score']), _number(summary['max']))
+        _number(summary['score']), _number(summary['max']),
+        ' <span class="nj">+ %s to mark by hand</span>' % _number(summary['pending'])
+        if summary.get('pending') else '')
 
 
 def histogram_svg(summaries, bins=10, width=420, height=120):
@@ -109,6 +113,7 @@ def points_cell(check):
     if 'max_points' not in check:
         return '<td></td>'
     return '<td>%s / %s%s</td>' % (
+        'to mark by hand' if check.get('pending') or check.get('passed', False) is None else
         'no score' if check.get('points') is None else _number(check['points']),
         _number(check['max_points']), '' if check.get('visibility', 'visible') == 'visible'
         else ' <small>(%s)</small>' % html.escape(check['visibility']))
