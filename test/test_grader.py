@@ -6,8 +6,9 @@ on the fixture folder (test/grading_fixtures.py: a dog that works, one with
 Python 2's tabs, a C++ node that does not compile, a node that raises at
 start, one that never moves, a hostile one, the dog as a .zip and as a
 .tar.gz, a README offering alternatives, one naming another package, one
-whose launch file names a node that is not there, and a node that shows
-every camera frame in a window). Each ends with its expected verdict; the
+whose launch file names a node that is not there, a node that shows
+every camera frame in a window, a robot, head and ball renamed, and a node
+importing what ROS desktop-full had). Each ends with its expected verdict; the
 folder and everything outside the runs' directories are unchanged; the
 hostile run costs only its own verdict (the dog graded alone gets the
 verdict it gets beside it); every process of every run is gone; the report's
@@ -243,6 +244,39 @@ def test_students_earlier_ros_and_the_courses_own_world(graded):
                                'rosrun dog_on_sim dog.py']
     assert own['truth']['refused_peers'] == []
     assert 'simulator.py' in own['truth']['simulator']
+
+
+def test_a_renamed_robot_head_and_ball_are_judged_by_their_roles(graded):
+    """robot2 in its own namespace, its head on camera_joint moved by a
+    camera_position_controller, the ball called toy: the dog plays as the one
+    that works does, and passes as it; the page names what it judged and why,
+    and its camera pictures are robot2's own."""
+    run = graded['runs']['renamed']
+    assert run['verdict'] == 'passed', (run['reason'], run.get('checks'))
+    assert {k: run['roles'][k]['name'] for k in ('robot', 'head', 'camera', 'ball')} == {
+        'robot': 'robot2', 'head': 'camera_joint', 'camera': 'robot2/camera1', 'ball': 'toy'}
+    assert run['roles']['namespace'] == 'robot2'
+    checks = {c['name']: c for c in run['checks']}
+    assert checks['head turns at the ball']['value'] >= 0.6
+    assert checks['head turns at the ball']['detail'].startswith('camera_joint, ')
+    for page in ('pages', 'feedback'):
+        with open(os.path.join(graded['out'], page, 'renamed.html')) as f:
+            text = f.read()
+        assert '<code>camera_joint</code>, the joint that turns camera <code>camera1</code>' \
+            in text, page
+        assert '<code>robot2</code>: driven through /robot2/cmd_vel' in text, page
+    frames = os.listdir(os.path.join(graded['out'], 'runs', 'renamed', 'record', 'frames'))
+    assert frames and all(f.startswith('robot2_camera1_') for f in frames)
+    assert os.path.exists(os.path.join(graded['out'], 'pages', 'img',
+                                       'renamed_closest_approach.jpg'))
+
+
+def test_what_ros_desktop_full_had_is_there(graded):
+    """A node importing actionlib_tutorials.msg (every desktop-full install had
+    it) runs as on the student's machine: no error, the dog plays."""
+    run = graded['runs']['tutorials']
+    assert run['verdict'] == 'passed', (run['reason'], run.get('errors'))
+    assert run['error_count'] == 0
 
 
 def test_miro_submissions_under_the_miro_profile(tmp_path):

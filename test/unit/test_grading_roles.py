@@ -186,3 +186,16 @@ def test_roles_travel_in_the_run_record():
     found = roles.find(trace, DOG)
     again = roles.of_run({'roles': found.to_dict()}, metrics.Trace(), DOG)
     assert again.to_dict() == found.to_dict() and again.head.name == 'camera_joint'
+
+
+def test_of_two_joints_named_head_the_one_that_turns_the_camera_left_and_right():
+    """head_tilt and head_yaw both hold 'head': the yaw one turns the head around."""
+    facts = robot_facts(head='head_tilt', axis=(0.0, 1.0, 0.0))
+    facts['joints']['head_tilt']['parent'] = 'pan_link'
+    facts['joints']['head_yaw'] = joint('revolute', 'link_neck', 'pan_link', [0.0, 0.0, 1.0])
+    run = states(head='head_tilt')
+    for state in run:
+        state['joints']['robot2']['head_yaw'] = state['joints']['robot2']['head_tilt']
+    trace = metrics.Trace(run, models={'robot2': facts, 'toy': ball_facts()})
+    found = roles.find(trace, DOG)
+    assert found.head.name == 'head_yaw' and found.camera.name == 'robot2/camera1'

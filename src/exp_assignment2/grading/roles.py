@@ -98,6 +98,12 @@ def _wheels(facts):
     return {j for p in facts.get('plugins') or () if p.get('drive') for j in p.get('joints') or ()}
 
 
+def _yaw(facts, joint):
+    """The joint turns about the vertical (left and right, as a head looks around)."""
+    axis = ((facts or {}).get('joints', {}).get(joint) or {}).get('axis') or [0, 0, 0]
+    return abs(axis[2]) > YAW
+
+
 def _chain(facts, link):
     """Joint names from ``link`` up to the root, nearest first."""
     parent_of = {j['child']: (name, j['parent']) for name, j in facts['joints'].items()}
@@ -152,10 +158,11 @@ def find_head(trace, robot, fragment):
     if fragment:
         named = [j for j in moving if fragment in j]
         if named:
-            tag = next((c[2] for c in cameras if named[0] in _chain(facts, c[1])), None) \
-                if facts else None
+            # head_pan and head_tilt: the one turning the camera, about z, first
+            on_camera = {j: c[2] for c in cameras for j in _chain(facts, c[1])}
+            named.sort(key=lambda j: (j not in on_camera, not _yaw(facts, j), j))
             return (Role(named[0], '%s, named like %s as the profile asks' % (
-                _code(named[0]), _code(fragment))), _camera_role(cameras, tag))
+                _code(named[0]), _code(fragment))), _camera_role(cameras, on_camera.get(named[0])))
     if not facts:
         return (Role(None, 'the simulator did not describe %s and none of its joints is named '
                            'like %s: which is the head cannot be told' % (
@@ -163,8 +170,7 @@ def find_head(trace, robot, fragment):
     for name, link, tag in cameras:
         turning = [j for j in _chain(facts, link) if facts['joints'][j]['type'] in TURNING]
         if turning:
-            yaw = [j for j in turning if abs((facts['joints'][j]['axis'] or [0, 0, 0])[2]) > YAW]
-            joint = (yaw or turning)[0]
+            joint = ([j for j in turning if _yaw(facts, j)] or turning)[0]
             return (Role(joint, '%s, the joint that turns camera %s (on %s)' % (
                 _code(joint), _code(name), _code(link))), _camera_role(cameras, tag))
     others = [j for j, f in sorted(facts['joints'].items())

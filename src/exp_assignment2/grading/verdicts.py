@@ -27,7 +27,8 @@ the precedence (docs/grading.md, "Verdicts", lists it row by row):
 13. ``timed_out``: the run did not reach its simulated duration within its
     wall-clock limit;
 14. ``failed_checks``: some check of the profile failed;
-15. ``passed``.
+15. ``passed``: every check that could be run passed (a check whose robot, head
+    or ball could not be told is not run: :mod:`.roles`; the reason names it).
 
 A node of a launch that cannot be started is not a verdict by itself
 (roslaunch starts the rest, and so the student saw it run): it is kept in
