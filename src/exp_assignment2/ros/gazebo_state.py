@@ -23,7 +23,7 @@ from geometry_msgs.msg import Point, Pose, Quaternion, Twist, Vector3
 from std_msgs.msg import Header
 
 from exp_assignment2.sim.plugins.cores import Every
-from exp_assignment2.sim.plugins.ros_io import Watched, stamp
+from exp_assignment2.sim.plugins.ros_io import Watched, stamp, subscribe
 from exp_assignment2.sim.poses import (PoseError, check_in_world, entity_pose, from_matrix,
                                        matrix, pose_tuple, relative, split_entity, twist_tuple)
 
@@ -57,9 +57,9 @@ class GazeboState(object):
                                                                  'set_link_state'))),
         ]
         self.subscribers = [
-            rospy.Subscriber('~set_model_state', ModelState, lambda msg: engine.call_soon(
+            subscribe('~set_model_state', ModelState, lambda msg: engine.call_soon(
                 lambda: self.set_model(msg, 'set_model_state topic')), queue_size=10),
-            rospy.Subscriber('~set_link_state', LinkState, lambda msg: engine.call_soon(
+            subscribe('~set_link_state', LinkState, lambda msg: engine.call_soon(
                 lambda: self.set_link(msg, 'set_link_state topic')), queue_size=10),
         ]
         self.model_states = Watched('~model_states', ModelStates)

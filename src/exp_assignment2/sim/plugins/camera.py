@@ -27,7 +27,6 @@ import copy
 import math
 
 import cv2
-import rospy
 from sensor_msgs.msg import CameraInfo, CompressedImage, Image
 from std_msgs.msg import Header
 
@@ -36,7 +35,7 @@ from exp_assignment2.sim.pacing import FramePace
 from exp_assignment2.sim.plugins.base import Plugin, PluginError
 from exp_assignment2.sim.plugins.frame_worker import FrameWorker
 from exp_assignment2.sim.plugins.cores import Every
-from exp_assignment2.sim.plugins.ros_io import Watched, stamp
+from exp_assignment2.sim.plugins.ros_io import Watched, stamp, subscribe
 from exp_assignment2.vision import encode_jpeg
 
 JPEG_FORMAT = 'rgb8; jpeg compressed bgr8'   # what image_transport writes for rgb8 images
@@ -109,8 +108,7 @@ class CameraPlugin(Plugin):
         self.pace, self.done_sub = None, None
         if self.engine.settings.get('frame_pace'):
             self.pace = FramePace(PACE_WINDOW, log=self.engine.log)
-            self.done_sub = rospy.Subscriber(base + '/frame_done', Header, self._on_done,
-                                             queue_size=10)
+            self.done_sub = subscribe(base + '/frame_done', Header, self._on_done, queue_size=10)
         self.worker = self.engine.shared(
             'camera.worker', lambda: FrameWorker(self.engine.settings.get('renderer', 'gl'),
                                                  self.engine))

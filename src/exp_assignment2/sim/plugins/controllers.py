@@ -11,7 +11,8 @@ from exp_assignment2.grammar import show_number
 from exp_assignment2.refusal import RefusalLog
 from exp_assignment2.sim.drives import JointPosition
 from exp_assignment2.sim.plugins.cores import Every
-from exp_assignment2.sim.plugins.ros_io import joint_claims, publish_joint_states, stamp
+from exp_assignment2.sim.plugins.ros_io import joint_claims, publish_joint_states, stamp, \
+    subscribe
 
 HEAD_SPEED, HEAD_EFFORT = 2.0, 5.0     # rad/s and N m a position controller uses at most
 # the controllers ros_controllers runs through a PID, which publish <ns>/<name>/state
@@ -78,7 +79,7 @@ class JointCommandController(object):
         self.topic = '%s/%s/command' % (manager.ns, name)
         self.ignored = RefusalLog(self.topic, rospy.logwarn, period=5.0, what='ignored')
         self.clamped = RefusalLog(self.topic, rospy.logwarn, period=5.0, what='clamped')
-        self.sub = rospy.Subscriber(self.topic, Float64, self._on_command, queue_size=1)
+        self.sub = subscribe(self.topic, Float64, self._on_command, queue_size=1)
         self.state = None
         if config['type'] in PID_TYPES:
             self.state = StateTopic(manager, name, config, self.joints[0])
