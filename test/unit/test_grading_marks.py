@@ -164,3 +164,42 @@ def test_over_repeats_the_median_score_and_its_run(tmp_path):
     assert (ann['score'], ann['score_run']) == (87.5, 'ann-r3')     # the grader error left out
     with open(str(tmp_path / 'pages' / 'ann.html')) as f:
         assert 'the median of the repeats' in f.read()
+
+
+def test_a_check_not_judged_waits_for_the_teacher_everywhere(tmp_path):
+    """The head could not be told: the pages say "not judged" and why, its 25
+    points are neither earned nor lost (pending, to mark by hand: the index,
+    grades.csv), Gradescope gives that test no score, and the pages say which
+    robot and ball were judged."""
+    runs = str(tmp_path / 'runs')
+    checks = [{'name': c['name'], 'metric': c['metric'], 'value': v, 'threshold': 't',
+               'passed': True, 'judged': True, 'detail': 'd'}
+              for c, v in zip(DOG['checks'], [1, 40.0, None, 5.0, 0])]
+    checks[2].update(passed=None, judged=False,
+                     detail='not judged: no joint turns camera `camera1` on `link_chassis`')
+    roles = {'robot': {'name': 'robot2', 'why': '`robot2`: driven', 'absent': False},
+             'head': {'name': None, 'why': 'no joint turns camera `camera1`', 'absent': False},
+             'camera': {'name': 'robot2/camera1', 'why': '`camera1`', 'absent': False},
+             'ball': {'name': 'toy', 'why': '`toy`: a sphere', 'absent': False},
+             'namespace': 'robot2'}
+    write_run(runs, 'eve', 'eve', 'passed', 1.0, checks=checks, roles=roles,
+              reason='not judged: head turns at the ball')
+    summary = report.write(str(tmp_path), DOG)['eve']
+    assert (summary['score'], summary['max'], summary['pending']) == (75, 100, 25)
+    assert summary['checks'][2]['passed'] is None
+    with open(str(tmp_path / 'grades.csv')) as f:
+        row = next(csv.DictReader(f))
+    assert (row['score'], row['pending'], row['head turns at the ball points']) == ('75', '25', '')
+    with open(str(tmp_path / 'index.html')) as f:
+        index = f.read()
+    assert '+ 25 to mark by hand' in index and '>not judged<' in index
+    for page in ('pages', 'feedback'):
+        with open(str(tmp_path / page / 'eve.html')) as f:
+            text = f.read()
+        assert 'not judged' in text and 'no joint turns camera <code>camera1</code>' in text
+        assert '<code>robot2</code>' in text and '<code>toy</code>' in text
+    with open(str(tmp_path / 'gradescope' / 'eve' / 'results.json')) as f:
+        results = json.load(f)
+    assert results['score'] == 75
+    head = results['tests'][2]
+    assert 'score' not in head and head['output'].startswith('not judged by the grader')

@@ -161,7 +161,8 @@ def page(summary, run, pictures, profile, clean):
                              {'passed': 'met', 'failed': 'not met'}.get(
                                  word, 'not judged: your teacher marks it'),
                              _e(_number(c.get('points')) or '—'),
-                             _e(_number(c.get('max_points'))), _e(clean(c['detail']))))
+                             _e(_number(c.get('max_points'))),
+                             report_judged.why_html(clean(c['detail']))))
         parts.append('</table>')
     parts += report_judged.judged_section(run, 'What the grader judged')
     parts.append('<h2>How it was started</h2><pre>%s</pre>' % _e(clean(

@@ -167,7 +167,8 @@ def _page(summary, runs, runs_dir, pictures, profile):
                          '%s<td>%s</td></tr>' % ((
                              _e(check['name']), _e(_figure_value(check['value'])),
                              _e(check['threshold'])) + report_judged.outcome(check) + (
-                             report_marks.points_cell(check), _e(check['detail']))))
+                             report_marks.points_cell(check),
+                             report_judged.why_html(check['detail']))))
         parts.append('</table>')
     parts += report_judged.judged_section(main)
     if pictures.get('top') or pictures.get('head'):
