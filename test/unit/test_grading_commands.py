@@ -113,5 +113,17 @@ def test_a_typo_in_one_submissions_settings_costs_that_one_only(tmp_path):
     teacher = read_teacher_file(str(path))
     assert teacher['errors'] == {'alice': "grading.yaml: submissions: alice: unknown key "
                                           "'comands' (did you mean 'commands'?) (known: "
-                                          "commands, skip)"}
+                                          "commands, roles, skip)"}
     assert teacher['submissions'] == {'bob': {'skip': True}}
+
+
+def test_the_teacher_names_one_submissions_roles(tmp_path):
+    """roles: the robot, head or ball of one submission, as the teacher saw them;
+    a wrong one costs that submission only."""
+    path = tmp_path / 'grading.yaml'
+    path.write_text('submissions:\n  alice:\n    roles: {robot: rover, head: neck_yaw}\n'
+                    '  bob:\n    roles: {tail: wag}\n')
+    teacher = read_teacher_file(str(path))
+    assert teacher['submissions'] == {'alice': {'roles': {'robot': 'rover', 'head': 'neck_yaw'}}}
+    assert teacher['errors']['bob'].startswith("grading.yaml: submissions: bob: roles: 'tail'")
+

@@ -199,3 +199,22 @@ def test_of_two_joints_named_head_the_one_that_turns_the_camera_left_and_right()
     trace = metrics.Trace(run, models={'robot2': facts, 'toy': ball_facts()})
     found = roles.find(trace, DOG)
     assert found.head.name == 'head_yaw' and found.camera.name == 'robot2/camera1'
+
+
+def test_the_teacher_names_what_the_grader_could_not_tell():
+    """A head that cannot be told (see above), named by the teacher for this
+    submission in grading.yaml: judged, and the page says who named it."""
+    facts = robot_facts(head='flag_joint', axis=(0.0, 0.0, 1.0))
+    facts['joints']['flag_joint']['parent'] = 'link_chassis'     # not under the camera
+    facts['joints']['flag_joint']['child'] = 'flag'
+    facts['joints']['joint_neck_link'] = joint('fixed', 'link_neck', 'link_head')
+    trace = metrics.Trace(states(head='flag_joint'),
+                          models={'robot2': facts, 'toy': ball_facts()})
+    assert roles.find(trace, DOG).head.name is None
+    mine = roles.named_by_teacher(DOG, {'head': 'flag_joint', 'robot': 'robot2'})
+    assert DOG['robot'] == 'robot' and DOG['checks'][2].get('joint') == 'head'   # unchanged
+    found, got = outcome(trace, mine)
+    assert found.head.name == 'flag_joint' and got['head_turn_near_ball'] == (1.6, True)
+    assert found.head.why == ('`flag_joint`, named like `flag_joint` as grading.yaml asks for '
+                              'this submission')
+    assert found.robot.why == '`robot2`, as grading.yaml names it for this submission'

@@ -32,7 +32,8 @@ PLACEHOLDER = re.compile(r'[<>{}\[\]]|\.\.\.|\bYOUR_|\bpackage_name\b', re.IGNOR
 TOP_KEYS = {'profile': str, 'duration': (int, float), 'commands': list, 'delay': (int, float),
             'real_time_factor': (int, float), 'submissions': dict, 'with': list,
             'template': (list, str)}     # the similarity report's (similarity_run.py)
-ONE_KEYS = {'commands': list, 'skip': bool}
+ONE_KEYS = {'commands': list, 'skip': bool, 'roles': dict}
+ROLE_KEYS = ('robot', 'head', 'ball')     # a submission's roles named by the teacher (roles.py)
 
 
 class TeacherFileError(Exception):
@@ -167,6 +168,10 @@ def _check_keys(data, allowed, where):
     for key in ('duration', 'delay', 'real_time_factor'):
         if key in data and not (0 <= data[key] <= 100000):
             raise TeacherFileError('%s: %s: %r is out of range' % (where, key, data[key]))
+    for key, name in (data.get('roles') or {}).items():
+        if key not in ROLE_KEYS or not isinstance(name, str) or not name.strip():
+            raise TeacherFileError('%s: roles: %r: %r is not one of %s naming a model or joint'
+                                   % (where, key, name, ', '.join(ROLE_KEYS)))
 
 
 def read_teacher_file(path):

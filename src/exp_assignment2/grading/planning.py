@@ -19,6 +19,7 @@ import shutil
 import tempfile
 
 from exp_assignment2.grading import launch_nodes, profiles
+from exp_assignment2.grading import roles as roles_
 from exp_assignment2.grading.choose import Context, choose, own_has
 from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, \
     readme_entries
@@ -144,12 +145,13 @@ def plan(args, out, version, log):
             log('%s: skipped (grading.yaml)' % submission.name)
             continue
         found = commands_for(submission, teacher, profile, provided, hidden)
+        mine = roles_.named_by_teacher(profile, own.get('roles'))
         for r in range(args.repeat):
             specs.append(RunSpec(
                 name=submission.name, path=submission.path, kind=submission.kind,
                 label=submission.name if args.repeat == 1 else '%s-r%d' % (submission.name,
                                                                              r + 1),
-                seed=args.seed + r, profile=profile, duration=chosen['duration'],
+                seed=args.seed + r, profile=mine, duration=chosen['duration'],
                 real_time_factor=chosen['real_time_factor'], hidden=hidden, version=version,
                 refused=(teacher.get('errors') or {}).get(submission.name), **found))
     return specs, profile, whence

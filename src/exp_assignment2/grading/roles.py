@@ -79,6 +79,29 @@ def _code(name):
     return '`%s`' % name
 
 
+def _named_by(profile, role):
+    """Who named a role: the teacher for this submission, or the profile."""
+    return 'grading.yaml names it for this submission' \
+        if role in (profile.get('teacher_named') or ()) else 'the profile names it'
+
+
+def named_by_teacher(profile, roles):
+    """The profile of one submission whose robot, head or ball the teacher named
+    in grading.yaml (``roles: {robot: rover, head: neck_yaw, ball: orange}``):
+    those names come first, as the profile's would, and the pages say who
+    named them. ``roles`` None or empty: the profile itself."""
+    if not roles:
+        return profile
+    mine = dict(profile, teacher_named=sorted(roles))
+    for key in ('robot', 'ball'):
+        if roles.get(key):
+            mine[key] = roles[key]
+    if roles.get('head'):
+        mine['checks'] = [dict(c, joint=roles['head']) if c['metric'] == 'head_turn_near_ball'
+                          else c for c in profile['checks']]
+    return mine
+
+
 def _cameras(facts):
     """[(sensor name, link, frame tag or None)] of a model's camera sensors; the
     tag names its frames in the record (``model/cameraName``) when a plugin
@@ -118,7 +141,7 @@ def _chain(facts, link):
 def find_robot(trace, profile):
     named = profile.get('robot')
     if named and trace.seen(named):
-        return Role(named, '%s, as the profile names it' % _code(named))
+        return Role(named, '%s, as %s' % (_code(named), _named_by(profile, 'robot')))
     candidates = [f for f in trace.models.values() if not f.get('static') and (
         _cameras(f) or (_drive_topics(f) and f.get('sphere') is None))]
     if not candidates:
@@ -148,7 +171,7 @@ def find_robot(trace, profile):
         _code(best['name']), ' and '.join(reasons), _code(named)))
 
 
-def find_head(trace, robot, fragment):
+def find_head(trace, robot, fragment, named_by='the profile asks'):
     """(head, camera) of the robot."""
     if robot.name is None:
         return Role(None, 'no robot: ' + robot.why, robot.absent), NO_ROLE
@@ -161,8 +184,9 @@ def find_head(trace, robot, fragment):
             # head_pan and head_tilt: the one turning the camera, about z, first
             on_camera = {j: c[2] for c in cameras for j in _chain(facts, c[1])}
             named.sort(key=lambda j: (j not in on_camera, not _yaw(facts, j), j))
-            return (Role(named[0], '%s, named like %s as the profile asks' % (
-                _code(named[0]), _code(fragment))), _camera_role(cameras, on_camera.get(named[0])))
+            return (Role(named[0], '%s, named like %s as %s' % (
+                _code(named[0]), _code(fragment), named_by)),
+                _camera_role(cameras, on_camera.get(named[0])))
     if not facts:
         return (Role(None, 'the simulator did not describe %s and none of its joints is named '
                            'like %s: which is the head cannot be told' % (
@@ -209,7 +233,7 @@ def find_ball(trace, profile, robot):
     if not named:
         return NO_ROLE
     if trace.seen(named):
-        return Role(named, '%s, as the profile names it' % _code(named))
+        return Role(named, '%s, as %s' % (_code(named), _named_by(profile, 'ball')))
     bounds = profile.get('ball_radius')
     others = [f for f in trace.models.values() if f['name'] != robot.name]   # a ball may be static
 
@@ -247,7 +271,10 @@ def head_fragment(profile):
 def find(trace, profile):
     """The run's :class:`Roles`."""
     robot = find_robot(trace, profile)
-    head, camera = find_head(trace, robot, head_fragment(profile))
+    head, camera = find_head(trace, robot, head_fragment(profile),
+                             'grading.yaml asks for this submission'
+                             if 'head' in (profile.get('teacher_named') or ()) else
+                             'the profile asks')
     chosen = profile.get('camera')
     if chosen and chosen in trace.models:        # the profile's choice of whose camera to show
         served = [c for c in _cameras(trace.models[chosen]) if c[2]]
