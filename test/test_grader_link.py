@@ -96,3 +96,32 @@ def test_the_simulator_tells_the_grader_what_each_model_is_and_who_drove_it(tmp_
     topics = {t for _, t, _ in found.topics}
     assert topics == {'/robot2/cmd_vel', '/late/cmd_vel'}, topics
     assert 'Traceback' not in output, output[-3000:]
+
+
+def test_a_message_of_another_type_is_not_read_as_a_command():
+    """Where a grader's relay took a topic first, what comes raw is read as the
+    plugin's type only if it is that type: a TwistStamped read as a Twist would
+    drive the robot at nonsense speeds; ROS would never have connected the two."""
+    import io
+    import rospy
+    from geometry_msgs.msg import Twist, TwistStamped
+    from exp_assignment2.sim.plugins.ros_io import read_as
+
+    def raw(message):
+        buff = io.BytesIO()
+        message.serialize(buff)
+        out = rospy.AnyMsg()
+        out._buff = buff.getvalue()
+        out._connection_header = {'type': message._type, 'md5sum': message._md5sum,
+                                  'callerid': '/student'}
+        return out
+    command = Twist()
+    command.linear.x = 0.3
+    got = read_as(raw(command), Twist)
+    assert got.linear.x == 0.3 and got._connection_header['callerid'] == '/student'
+    stamped = TwistStamped()
+    stamped.twist.linear.x = 0.3
+    assert read_as(raw(stamped), Twist) is None
+    broken = raw(command)
+    broken._buff = b'\x01'
+    assert read_as(broken, Twist) is None

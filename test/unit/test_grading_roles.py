@@ -95,7 +95,8 @@ def test_a_renamed_robot_head_and_ball_are_found_by_their_roles():
                                'carries camera `camera1` (no model `robot`)')
     assert found.head.why == ('`camera_joint`, the joint that turns camera `camera1` (on '
                               '`camera_link`)')
-    assert found.ball.why.startswith('`toy`: moved through /toy/cmd_vel (40 commands)')
+    assert found.ball.why == ('`toy`: a sphere of radius 0.5 m, moved through /toy/cmd_vel '
+                              '(40 commands) (no model `ball`)')
     assert got == {'approaches': (1, True), 'first_approach_time': (8.0, True),
                    'head_turn_near_ball': (1.6, True), 'path_length': (2.5, True),
                    'python_errors': (0, True)}
@@ -211,10 +212,88 @@ def test_the_teacher_names_what_the_grader_could_not_tell():
     trace = metrics.Trace(states(head='flag_joint'),
                           models={'robot2': facts, 'toy': ball_facts()})
     assert roles.find(trace, DOG).head.name is None
-    mine = roles.named_by_teacher(DOG, {'head': 'flag_joint', 'robot': 'robot2'})
+    mine = profiles.with_teacher_roles(DOG, {'head': 'flag_joint', 'robot': 'robot2'})
     assert DOG['robot'] == 'robot' and DOG['checks'][2].get('joint') == 'head'   # unchanged
     found, got = outcome(trace, mine)
     assert found.head.name == 'flag_joint' and got['head_turn_near_ball'] == (1.6, True)
-    assert found.head.why == ('`flag_joint`, named like `flag_joint` as grading.yaml asks for '
-                              'this submission')
+    assert found.head.why == '`flag_joint`, as grading.yaml names it for this submission'
     assert found.robot.why == '`robot2`, as grading.yaml names it for this submission'
+
+
+def test_an_idle_template_robot_is_not_the_one_the_student_played_with():
+    """The template's robot and ball are spawned and left alone; the student
+    drives robot2 and moves toy: those are judged, the page saying why."""
+    facts = [robot_facts(name='robot', namespace='robot', head='joint_head'), robot_facts(),
+             ball_facts(name='ball'), ball_facts()]
+    trace = trace_of(facts, fed={'robot2': 500, 'toy': 30},
+                     extra={'robot': [-5, 7, 0, 0], 'ball': [-7, 6, 0.5, 0]})
+    found, got = outcome(trace)
+    assert (found.robot.name, found.ball.name) == ('robot2', 'toy')
+    assert found.robot.why.endswith('(`robot` is there, but nothing drove it)')
+    assert found.ball.why.endswith('(`ball` is there, but nothing moved it)')
+    assert got['approaches'] == (1, True)
+
+
+def test_the_ball_is_a_sphere_before_anything_a_command_moved():
+    """The person was put somewhere once; the green sphere nobody moved is the ball."""
+    person = dict(ball_facts(name='person', plugins=False), sphere=None, kinematic=False)
+    trace = trace_of([robot_facts(), person, ball_facts(name='green', plugins=False)],
+                     ball='green', fed={'robot2': 100}, placed={'person': 1},
+                     extra={'person': [-7, 7, 0, 0]})
+    assert roles.find(trace, DOG).ball.name == 'green'
+
+
+def test_an_empty_world_fails_what_needs_a_robot():
+    """Nothing was spawned: absent, not "cannot be told" (the run is not passed)."""
+    trace = metrics.Trace([{'t': i / 10.0, 'models': {}, 'joints': {}} for i in range(50)])
+    found, got = outcome(trace)
+    assert found.robot.absent and got['path_length'] == (None, False)
+    assert got['head_turn_near_ball'] == (None, False)
+
+
+def test_a_joint_named_head_that_does_not_turn_the_camera_is_not_the_head():
+    facts = robot_facts()
+    facts['joints']['head_light'] = joint('revolute', 'link_chassis', 'light', [0, 0, 1])
+    run = states()
+    for state in run:
+        state['joints']['robot2']['head_light'] = 0.0
+    trace = metrics.Trace(run, models={'robot2': facts, 'toy': ball_facts()})
+    found, got = outcome(trace)
+    assert found.head.name == 'camera_joint' and got['head_turn_near_ball'] == (1.6, True)
+
+
+def test_a_depth_camera_and_a_robot_with_no_drive_plugin():
+    """A Kinect-like depth sensor is a camera; a robot driven through ros_control's
+    velocity controllers (no drive plugin) is the robot by its camera and its way."""
+    facts = robot_facts()
+    facts['sensors'][0]['type'] = 'depth'
+    facts['plugins'] = [p for p in facts['plugins'] if not p.get('drive')]
+    trace = trace_of([facts, ball_facts()], fed={})
+    found = roles.find(trace, DOG)
+    assert (found.robot.name, found.head.name) == ('robot2', 'camera_joint')
+    assert found.robot.why.startswith('`robot2`: carries camera `camera1`')
+
+
+def test_casters_are_wheels_so_a_fixed_camera_means_no_head():
+    facts = robot_facts(head_type='fixed')
+    facts['joints']['caster'] = joint('continuous', 'link_chassis', 'caster', [0, 0, 1])
+    found = roles.find(trace_of([facts, ball_facts()]), DOG)
+    assert found.head.name is None and found.head.absent
+
+
+def test_odd_facts_do_not_break_the_grading():
+    """Facts with keys missing (an older or a hostile record) are read as unknown."""
+    trace = trace_of([{'name': 'robot2'}, {'name': 'toy', 'sphere': 0.5}])
+    found = roles.find(trace, DOG)
+    assert (found.robot.name, found.ball.name) == ('robot2', 'toy')     # it went 2.5 m
+    assert found.robot.why == '`robot2`: driven (3000 commands) (no model `robot`)'
+    assert roles.Roles.from_dict({'robot': {'name': 'r', 'why': 'w', 'extra': 1},
+                                  'head': 'nonsense'}).robot.name == 'r'
+
+
+def test_a_head_the_teacher_names_that_the_robot_lacks_is_not_judged():
+    trace = trace_of([robot_facts(), ball_facts()])
+    found, got = outcome(trace, profiles.with_teacher_roles(DOG, {'head': 'neck_yaw'}))
+    assert found.head.name is None and not found.head.absent
+    assert found.head.why.startswith('grading.yaml names the head `neck_yaw`; `robot2` has no')
+    assert got['head_turn_near_ball'] == (None, None)

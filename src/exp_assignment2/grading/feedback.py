@@ -29,11 +29,22 @@ WORDS = {
     'grader_error': 'The grader failed on its own side (not because of your code). Your '
                     'submission has no score yet: it will be graded again.',
 }
+NOT_JUDGED = ('The grader could not judge some checks (it could not tell which part of your '
+              'robot or world they are about): your teacher marks those by hand.')
+
+
+def words(summary):
+    """What the verdict means for the student, in a sentence or two."""
+    if summary['verdict'] == 'passed' and summary.get('pending'):
+        return 'Your package ran and met every check the grader could judge. ' + NOT_JUDGED
+    said = WORDS.get(summary['verdict'], '')
+    return said + (' ' + NOT_JUDGED if summary.get('pending') else '')
 RUN_PATH = re.compile(r'(/[^\s"\'<>:]*)?/runs/[^/\s"\']+/work/(overlay/[^/\s"\']+/)?(src/)?')
 STYLE = '''body{font-family:sans-serif;margin:1.5em;color:#222;max-width:60em}
 table{border-collapse:collapse}th,td{border:1px solid #ccc;padding:4px 8px;font-size:13px;
 vertical-align:top}th{background:#eee}pre{background:#f6f6f6;padding:8px;overflow-x:auto;
-font-size:12px;max-height:30em}.fail{color:#c62828}.ok{color:#2e7d32}.nj{color:#8a6d3b}img{border:1px solid #ddd;
+font-size:12px;max-height:30em}.fail{color:#c62828}.ok{color:#2e7d32}.nj{color:#8a6d3b}
+img{border:1px solid #ddd;
 max-width:100%}.score{font-size:1.6em}'''
 
 
@@ -145,7 +156,7 @@ def page(summary, run, pictures, profile, clean):
              '<style>%s</style></head><body>' % (_e(summary['name']), STYLE),
              '<h1>Feedback: %s</h1><p>%s</p>' % (_e(summary['name']),
                                                  _e(profile.get('title') or profile['name'])),
-             _score_part(summary), '<p>%s</p>' % _e(WORDS.get(summary['verdict'], ''))]
+             _score_part(summary), '<p>%s</p>' % _e(words(summary))]
     fix = to_fix(summary, run, clean)
     if fix:
         parts.append('<h2>What to fix</h2><ol>%s</ol>' % ''.join('<li>%s</li>' % i for i in fix))
@@ -164,7 +175,7 @@ def page(summary, run, pictures, profile, clean):
                              _e(_number(c.get('max_points'))),
                              report_judged.why_html(clean(c['detail']))))
         parts.append('</table>')
-    parts += report_judged.judged_section(run, 'What the grader judged')
+    parts += report_judged.judged_section(run, shown, 'What the grader judged')
     parts.append('<h2>How it was started</h2><pre>%s</pre>' % _e(clean(
         '\n'.join(run.get('commands') or []))))
     pics = [(k, pictures.get(k)) for k in ('top', 'head')] + \

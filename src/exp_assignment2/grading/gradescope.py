@@ -26,7 +26,7 @@ import subprocess
 import sys
 import time
 
-from exp_assignment2.grading.feedback import WORDS, cleaner, to_fix
+from exp_assignment2.grading.feedback import cleaner, to_fix, words
 
 ROOT_ENV = 'EXP2_AUTOGRADER_ROOT'
 ARGS_ENV = 'EXP2_AUTOGRADER_ARGS'      # more arguments of grade, e.g. "--profile miro"
@@ -54,7 +54,7 @@ def _test_output(check, clean):
 def results(summary, run, profile, clean, execution_time=None):
     """Gradescope's results.json (a dict) for one submission's summary."""
     no_score = summary.get('score') is None
-    lines = [WORDS.get(summary['verdict'], '')]
+    lines = [words(summary)]
     fixes = [_text(i) for i in to_fix(summary, run, clean)]
     if fixes:
         lines += ['', 'What to fix:'] + ['%d. %s' % (i + 1, f) for i, f in enumerate(fixes)]

@@ -204,6 +204,15 @@ def arrival_ratio(trace, roles, check):
 
 METRICS = {fn.__name__: fn for fn in (approaches, first_approach_time, head_turn_near_ball,
                                       path_length, python_errors, arrivals, arrival_ratio)}
+# the roles each metric judges (the camera: its pictures, beside the head)
+NEEDS = {'approaches': ('robot', 'ball'), 'first_approach_time': ('robot', 'ball'),
+         'head_turn_near_ball': ('robot', 'head', 'camera', 'ball'), 'path_length': ('robot',),
+         'python_errors': (), 'arrivals': ('robot',), 'arrival_ratio': ('robot',)}
+
+
+def roles_needed(checks):
+    """The roles (robot, head, camera, ball) the checks judge."""
+    return {role for check in checks for role in NEEDS.get(check.get('metric'), ())}
 
 
 def threshold_text(check):

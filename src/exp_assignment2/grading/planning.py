@@ -19,7 +19,6 @@ import shutil
 import tempfile
 
 from exp_assignment2.grading import launch_nodes, profiles
-from exp_assignment2.grading import roles as roles_
 from exp_assignment2.grading.choose import Context, choose, own_has
 from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, \
     readme_entries
@@ -145,7 +144,7 @@ def plan(args, out, version, log):
             log('%s: skipped (grading.yaml)' % submission.name)
             continue
         found = commands_for(submission, teacher, profile, provided, hidden)
-        mine = roles_.named_by_teacher(profile, own.get('roles'))
+        mine = profiles.with_teacher_roles(profile, own.get('roles'))
         for r in range(args.repeat):
             specs.append(RunSpec(
                 name=submission.name, path=submission.path, kind=submission.kind,

@@ -108,3 +108,20 @@ def check(data, where='profile'):
         check_spec(item, here, ProfileError)
         item.setdefault('name', item['metric'])
     return profile
+
+
+def with_teacher_roles(profile, roles):
+    """The profile of one submission whose robot, head or ball the teacher named
+    in grading.yaml (``roles: {robot: rover, head: neck_yaw, ball: orange}``):
+    those are taken as named (:mod:`.roles`) and the pages say grading.yaml
+    named them. ``roles`` None or empty: the profile itself."""
+    if not roles:
+        return profile
+    mine = dict(profile, teacher_named=sorted(roles))
+    for key in ('robot', 'ball'):
+        if roles.get(key):
+            mine[key] = roles[key]
+    if roles.get('head'):
+        mine['checks'] = [dict(c, joint=roles['head']) if c['metric'] == 'head_turn_near_ball'
+                          else c for c in profile['checks']]
+    return mine

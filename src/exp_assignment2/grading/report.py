@@ -101,9 +101,12 @@ def _figure_value(value):
     return ('%.3g' % value) if isinstance(value, float) else str(value)
 
 
-def _verdict_badge(verdict):
-    return '<span class="v" style="background:%s">%s</span>' % (COLOURS.get(verdict, '#333'),
-                                                                verdict)
+def _verdict_badge(verdict, pending=0):
+    """The verdict, and the points a person must still mark (checks not judged)."""
+    return '<span class="v" style="background:%s">%s</span>%s' % (
+        COLOURS.get(verdict, '#333'), verdict,
+        ' <span class="nj">%s points to mark by hand</span>' % report_marks._number(pending)
+        if pending else '')
 
 
 def _run_pictures(run, runs_dir, img_dir, profile):
@@ -141,7 +144,8 @@ def _page(summary, runs, runs_dir, pictures, profile):
              '<style>%s</style><script>%s</script></head><body>' % (
                  _e(summary['name']), STYLE, IMAGES_JS),
              '<p><a href="../index.html">&larr; all submissions</a></p>',
-             '<h1>%s %s</h1>' % (_e(summary['name']), _verdict_badge(summary['verdict'])),
+             '<h1>%s %s</h1>' % (_e(summary['name']), _verdict_badge(summary['verdict'],
+                                                                    summary.get('pending'))),
              '<p>%s</p>' % _e(summary['reason']), report_marks.score_paragraph(summary)]
     if summary['flaky']:
         parts.append('<p class="flaky">flaky: the repeats ended %s</p>'
@@ -170,7 +174,7 @@ def _page(summary, runs, runs_dir, pictures, profile):
                              report_marks.points_cell(check),
                              report_judged.why_html(check['detail']))))
         parts.append('</table>')
-    parts += report_judged.judged_section(main)
+    parts += report_judged.judged_section(main, profile['checks'])
     if pictures.get('top') or pictures.get('head'):
         parts.append('<h2>What happened</h2><p>')
         for key in ('top', 'head'):

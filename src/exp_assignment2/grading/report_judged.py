@@ -5,7 +5,8 @@ and the ball, each found by its role with why (``roles`` of a run's record,
 import html
 import re
 
-LABELS = (('robot', 'robot'), ('head', 'head'), ('camera', 'camera'), ('ball', 'ball'))
+from exp_assignment2.grading.metrics import roles_needed
+from exp_assignment2.grading.roles import Roles
 
 
 def _e(text):
@@ -24,22 +25,17 @@ def outcome(check):
     return ('ok', 'passed') if check['passed'] else ('fail', 'failed')
 
 
-def judged_rows(run):
-    """[(what, name or None, why)] of the run's roles that the profile judges."""
-    roles = run.get('roles') or {}
-    rows = []
-    for key, label in LABELS:
-        role = roles.get(key)
-        if not role or (role.get('name') is None and role.get('why') == 'the profile judges '
-                                                                         'none'):
-            continue
-        rows.append((label, role.get('name'), role.get('why') or ''))
-    return rows
+def judged_rows(run, checks):
+    """[(what, name or None, why)] of the run's roles that ``checks`` judge."""
+    roles, needed = run.get('roles') or {}, roles_needed(checks)
+    return [(key, roles[key].get('name'), roles[key].get('why') or '') for key in Roles.KEYS
+            if key in needed and isinstance(roles.get(key), dict)]
 
 
-def judged_section(run, heading='What was judged'):
-    """HTML parts: a table of the robot, head, camera and ball judged, and why."""
-    rows = judged_rows(run)
+def judged_section(run, checks, heading='What was judged'):
+    """HTML parts: a table of the robot, head, camera and ball the ``checks``
+    judged, and why (none: no part)."""
+    rows = judged_rows(run, checks)
     if not rows:
         return []
     parts = ['<h2>%s</h2><table><tr><th></th><th>judged</th><th>why</th></tr>' % _e(heading)]

@@ -3,34 +3,40 @@ looks through and which model the ball (no ROS): found by their roles, as a
 teacher watching the run finds them, whatever the student called them.
 
 What the simulator said of each model (its joints, sensors, drive plugins and
-the topics they take, whether it is a sphere: :mod:`exp_assignment2.sim.model_facts`)
-and what happened to it (commands its drive took, times a command placed it,
-the way it went) are in the run's :class:`~.metrics.Trace`. From them:
+the topics they take, whether it is a sphere: :mod:`exp_assignment2.sim.model_facts`,
+read through :mod:`.model_parts`) and what happened to it (commands its drive
+took, times a command placed it, the way it went) are in the run's
+:class:`~.metrics.Trace`. From them:
 
-* **the robot**: the model named in the profile, if the run has one; else the
-  model that is driven (its drive plugin took commands) and carries a camera,
-  then one that carries a camera, then one that is driven. A model with
-  neither (a seated person, a kennel) is never it, nor is a sphere without a
-  camera (the ball);
-* **the head**: the robot's joint whose name holds the profile's ``joint`` (a
-  first choice); else the revolute joint on the chain from the robot's base to
-  the link carrying its camera (a yaw joint first, then the nearest the camera);
+* **the robot**: the model named in the profile, unless nothing drove it
+  while another model was driven; else the model that is driven and carries a
+  camera, then one that carries a camera, one that is driven, one that went
+  somewhere. Static models (a seated person, a kennel) and spheres without a
+  camera (the ball) are never it;
+* **the head**: the robot's joint whose name holds the profile's ``joint``, if
+  it turns the camera (or no joint does); else the revolute joint on the chain
+  from the robot's base to the link carrying its camera (a yaw joint first,
+  then the nearest the camera);
 * **the camera**: the camera that head turns (or the robot's only one): the
   frames of the record that are shown;
-* **the ball**: the model named in the profile, if the run has one; else the
-  model (not the robot) that commands moved (a ball server's ``cmd_vel``,
-  ``set_model_state``, ``set_link_state``), then a sphere of the profile's
-  ``ball_radius``.
+* **the ball**: the model named in the profile, unless it was never moved
+  while another sphere was; else, of the other models that cannot be the
+  robot, a sphere of the profile's ``ball_radius`` (one that commands moved
+  first), then a model commands moved (a ball server's ``cmd_vel``,
+  ``set_model_state``, ``set_link_state``).
 
-A :class:`Role` that is not found says why, and says whether the thing is
-*absent* (the world has no robot, the robot no joint but its wheels: a teacher
-would fail what needs it) or only *untold* (the record cannot say which: the
-checks needing it are not run, and the page says so).
+The teacher may name a submission's roles in grading.yaml
+(:func:`~.profiles.with_teacher_roles`): those are taken as named. A
+:class:`Role` that is not found says why, and whether the thing is *absent*
+(the world has no robot, the robot no joint but its wheels: a teacher fails
+what needs it) or only *untold* (the record cannot say which: the checks
+needing it are not run, and the page says so).
 """
 import collections
 
-TURNING = ('revolute', 'continuous')
-YAW = 0.9          # |z| of a joint's unit axis (root frame) for a joint that turns the head left/right
+from exp_assignment2.grading import model_parts as parts
+
+MOVED = 0.5        # m a model with no drive must go to count as a robot that moved
 
 
 class Role(collections.namedtuple('Role', 'name why absent')):
@@ -60,145 +66,135 @@ class Roles(object):
 
     @classmethod
     def from_dict(cls, data):
-        data = data or {}
-        return cls(namespace=data.get('namespace') or '', **{
-            key: Role(**data[key]) for key in cls.KEYS if isinstance(data.get(key), dict)})
-
-    @classmethod
-    def named(cls, profile, joint=None):
-        """The profile's names taken as they are (a record the simulator described
-        nothing in: names are all there is)."""
-        return cls(robot=Role(profile.get('robot'), 'named in the profile'),
-                   head=Role(None, 'the profile names a part of the joint\'s name only')
-                   if joint is None else Role(joint, 'named in the profile'),
-                   ball=Role(profile.get('ball'), 'named in the profile') if profile.get('ball')
-                   else NO_ROLE)
+        data = data if isinstance(data, dict) else {}
+        found = {key: Role(data[key].get('name'), data[key].get('why') or '',
+                           data[key].get('absent')) for key in cls.KEYS
+                 if isinstance(data.get(key), dict)}
+        return cls(namespace=data.get('namespace') or '', **found)
 
 
 def _code(name):
     return '`%s`' % name
 
 
-def _named_by(profile, role):
-    """Who named a role: the teacher for this submission, or the profile."""
-    return 'grading.yaml names it for this submission' \
-        if role in (profile.get('teacher_named') or ()) else 'the profile names it'
+def _teacher(profile, role):
+    return role in (profile.get('teacher_named') or ())
 
 
-def named_by_teacher(profile, roles):
-    """The profile of one submission whose robot, head or ball the teacher named
-    in grading.yaml (``roles: {robot: rover, head: neck_yaw, ball: orange}``):
-    those names come first, as the profile's would, and the pages say who
-    named them. ``roles`` None or empty: the profile itself."""
-    if not roles:
-        return profile
-    mine = dict(profile, teacher_named=sorted(roles))
-    for key in ('robot', 'ball'):
-        if roles.get(key):
-            mine[key] = roles[key]
-    if roles.get('head'):
-        mine['checks'] = [dict(c, joint=roles['head']) if c['metric'] == 'head_turn_near_ball'
-                          else c for c in profile['checks']]
-    return mine
+def _nothing_described(trace, what):
+    """The role when no model fits: untold where the simulator left some model
+    undescribed (an older record, a lost line), else absent."""
+    seen = set(name for state in trace.states for name in state['models'])
+    undescribed = sorted(seen - set(trace.models))
+    if undescribed:
+        return Role(None, 'the simulator did not describe %s: which is the %s cannot be told'
+                    % (', '.join(map(_code, undescribed)), what))
+    return None
 
 
-def _cameras(facts):
-    """[(sensor name, link, frame tag or None)] of a model's camera sensors; the
-    tag names its frames in the record (``model/cameraName``) when a plugin
-    here serves it."""
-    served = {p['sensor']['link']: p.get('camera') for p in facts.get('plugins') or ()
-              if p.get('sensor') and p.get('camera')}
-    return [(s['name'], s['link'], '%s/%s' % (facts['name'], served[s['link']])
-             if served.get(s['link']) else None)
-            for s in facts.get('sensors') or () if 'camera' in (s.get('type') or '')]
-
-
-def _drive_topics(facts):
-    return [p['command'] for p in facts.get('plugins') or () if p.get('drive')]
-
-
-def _wheels(facts):
-    return {j for p in facts.get('plugins') or () if p.get('drive') for j in p.get('joints') or ()}
-
-
-def _yaw(facts, joint):
-    """The joint turns about the vertical (left and right, as a head looks around)."""
-    axis = ((facts or {}).get('joints', {}).get(joint) or {}).get('axis') or [0, 0, 0]
-    return abs(axis[2]) > YAW
-
-
-def _chain(facts, link):
-    """Joint names from ``link`` up to the root, nearest first."""
-    parent_of = {j['child']: (name, j['parent']) for name, j in facts['joints'].items()}
-    chain, seen = [], set()
-    while link in parent_of and link not in seen:
-        seen.add(link)
-        name, link = parent_of[link]
-        chain.append(name)
-    return chain
+def _robot_like(trace, facts):
+    """It may be the robot: not static, and a camera, a drive (not a sphere's) or a way gone."""
+    if facts.get('static'):
+        return False
+    if parts.cameras(facts):
+        return True
+    return facts.get('sphere') is None and (bool(parts.drive_topics(facts)) or
+                                            trace.travelled(facts['name']) >= MOVED)
 
 
 def find_robot(trace, profile):
+    """The robot's :class:`Role`: see the module docstring."""
     named = profile.get('robot')
+    fed = lambda name: trace.counter('fed', name)      # noqa: E731
+    candidates = [f for f in trace.models.values() if _robot_like(trace, f)]
     if named and trace.seen(named):
-        return Role(named, '%s, as %s' % (_code(named), _named_by(profile, 'robot')))
-    candidates = [f for f in trace.models.values() if not f.get('static') and (
-        _cameras(f) or (_drive_topics(f) and f.get('sphere') is None))]
+        driven = [f['name'] for f in candidates if fed(f['name']) and f['name'] != named]
+        if _teacher(profile, 'robot') or fed(named) or not driven:
+            return Role(named, '%s, as %s' % (_code(named), 'grading.yaml names it for this '
+                                              'submission' if _teacher(profile, 'robot')
+                                              else 'the profile names it'))
+    elif named and _teacher(profile, 'robot'):
+        return Role(None, 'grading.yaml names the robot %s, which the run does not have'
+                    % _code(named))
     if not candidates:
-        if not trace.models:
-            return Role(None, 'no model %s in the ground truth, and the simulator described no '
-                              'model: the robot cannot be told' % _code(named))
-        return Role(None, 'no robot in the world: no model %s, none with a drive or a camera '
-                          '(models: %s)' % (_code(named), ', '.join(
-                              _code(n) for n in sorted(trace.models))), absent=True)
+        return _nothing_described(trace, 'robot') or Role(
+            None, 'no robot in the world: no model %s, none with a drive or a camera, none '
+                  'that went anywhere (models: %s)' % (_code(named), ', '.join(
+                      map(_code, sorted(trace.models))) or 'none'), absent=True)
 
     def rank(facts):
-        fed, camera = trace.counter('fed', facts['name']), bool(_cameras(facts))
-        return (camera and fed > 0, camera, fed > 0, fed, trace.travelled(facts['name']))
+        camera = bool(parts.cameras(facts))
+        return (camera and fed(facts['name']) > 0, camera, fed(facts['name']) > 0,
+                fed(facts['name']), trace.travelled(facts['name']))
     best = max(sorted(candidates, key=lambda f: f['name']), key=rank)
-    fed = trace.counter('fed', best['name'])
     reasons = []
-    if fed:
-        reasons.append('driven through %s (%d commands)' % (
-            ', '.join(_drive_topics(best)), fed))
-    cameras = _cameras(best)
-    if cameras:
-        reasons.append('carries camera %s' % ', '.join(_code(c[0]) for c in cameras))
+    if fed(best['name']):
+        reasons.append('driven%s (%d commands)' % (
+            ''.join(' through ' + t for t in parts.drive_topics(best)[:1]), fed(best['name'])))
+    if parts.cameras(best):
+        reasons.append('carries camera %s' % ', '.join(_code(c[0]) for c in parts.cameras(best)))
     if not reasons:
-        reasons.append('has a drive plugin on %s, though nothing drove it'
-                       % ', '.join(_drive_topics(best)))
-    return Role(best['name'], '%s: %s (no model %s)' % (
-        _code(best['name']), ' and '.join(reasons), _code(named)))
+        reasons.append('has a drive on %s, though nothing drove it' % ', '.join(
+            parts.drive_topics(best)) if parts.drive_topics(best) else
+            'went %.1f m' % trace.travelled(best['name']))
+    there = ('%s is there, but nothing drove it' % _code(named) if named and trace.seen(named)
+             else 'no model %s' % _code(named))
+    return Role(best['name'], '%s: %s (%s)' % (_code(best['name']), ' and '.join(reasons), there))
 
 
-def find_head(trace, robot, fragment, named_by='the profile asks'):
-    """(head, camera) of the robot."""
+def _camera_role(cameras, tag):
+    served = [c for c in cameras if c[2]]
+    chosen = next((c for c in served if c[2] == tag), served[0] if len(served) == 1 else None)
+    if chosen is None:
+        return Role(None, 'no camera of the robot is drawn here' if not served else
+                    'the robot has %d cameras, none on its head' % len(served))
+    return Role(chosen[2], '%s on %s' % (_code(chosen[0]), _code(chosen[1])))
+
+
+def _named_head(trace, robot, facts, fragment, teacher):
+    """(head, camera) the name gives, or None to find the head by its role."""
+    cameras = parts.cameras(facts)
+    moving = trace.joint_names(robot)
+    if teacher:
+        if fragment in moving:
+            on = next((c[2] for c in cameras if fragment in parts.chain(facts, c[1])), None)
+            return (Role(fragment, '%s, as grading.yaml names it for this submission'
+                         % _code(fragment)), _camera_role(cameras, on))
+        return (Role(None, 'grading.yaml names the head %s; %s has no such moving joint '
+                           '(it has %s)' % (_code(fragment), _code(robot), ', '.join(
+                               map(_code, moving)) or 'none')), _camera_role(cameras, None))
+    matches = [j for j in moving if fragment and fragment in j]
+    turning = {j: c[2] for c in cameras for j in parts.turning_on_chain(facts, c[1])}
+    if turning:        # a name off the camera's chain (head_light) is not the head
+        matches = [j for j in matches if j in turning]
+    if not matches:
+        return None
+    matches.sort(key=lambda j: (j not in turning, not parts.is_yaw(facts, j), j))
+    return (Role(matches[0], '%s, named like %s as the profile asks' % (
+        _code(matches[0]), _code(fragment))), _camera_role(cameras, turning.get(matches[0])))
+
+
+def find_head(trace, robot, fragment, teacher=False):
+    """(head, camera) of the robot: see the module docstring."""
     if robot.name is None:
         return Role(None, 'no robot: ' + robot.why, robot.absent), NO_ROLE
     facts = trace.models.get(robot.name)
-    cameras = _cameras(facts) if facts else []
-    moving = trace.joint_names(robot.name)
-    if fragment:
-        named = [j for j in moving if fragment in j]
-        if named:
-            # head_pan and head_tilt: the one turning the camera, about z, first
-            on_camera = {j: c[2] for c in cameras for j in _chain(facts, c[1])}
-            named.sort(key=lambda j: (j not in on_camera, not _yaw(facts, j), j))
-            return (Role(named[0], '%s, named like %s as %s' % (
-                _code(named[0]), _code(fragment), named_by)),
-                _camera_role(cameras, on_camera.get(named[0])))
+    named = _named_head(trace, robot.name, facts, fragment, teacher)
+    if named is not None:
+        return named
     if not facts:
         return (Role(None, 'the simulator did not describe %s and none of its joints is named '
                            'like %s: which is the head cannot be told' % (
                                _code(robot.name), _code(fragment))), NO_ROLE)
+    cameras = parts.cameras(facts)
     for name, link, tag in cameras:
-        turning = [j for j in _chain(facts, link) if facts['joints'][j]['type'] in TURNING]
+        turning = parts.turning_on_chain(facts, link)
         if turning:
-            joint = ([j for j in turning if _yaw(facts, j)] or turning)[0]
+            joint = ([j for j in turning if parts.is_yaw(facts, j)] or turning)[0]
             return (Role(joint, '%s, the joint that turns camera %s (on %s)' % (
                 _code(joint), _code(name), _code(link))), _camera_role(cameras, tag))
-    others = [j for j, f in sorted(facts['joints'].items())
-              if f['type'] in TURNING and j not in _wheels(facts)]
+    others = [j for j, f in sorted(parts.joints(facts).items())
+              if f.get('type') == 'revolute' and j not in parts.wheels(facts)]
     camera = _camera_role(cameras, None)
     if not cameras:
         if others:
@@ -215,52 +211,49 @@ def find_head(trace, robot, fragment, named_by='the profile asks'):
                  % (fixed, _code(robot.name)), absent=True), camera)
 
 
-def _camera_role(cameras, tag):
-    served = [c for c in cameras if c[2]]
-    chosen = next((c for c in served if c[2] == tag), served[0] if len(served) == 1 else None)
-    if chosen is None:
-        return Role(None, 'no camera of the robot is drawn here' if not served else
-                    'the robot has %d cameras, none on its head' % len(served))
-    return Role(chosen[2], '%s on %s' % (_code(chosen[0]), _code(chosen[1])))
-
-
-def _in(radius, bounds):
+def _radius_fits(radius, bounds):
     return radius is not None and (not bounds or bounds[0] <= radius <= bounds[1])
 
 
 def find_ball(trace, profile, robot):
+    """The ball's :class:`Role`: see the module docstring."""
     named = profile.get('ball')
     if not named:
         return NO_ROLE
-    if trace.seen(named):
-        return Role(named, '%s, as %s' % (_code(named), _named_by(profile, 'ball')))
     bounds = profile.get('ball_radius')
-    others = [f for f in trace.models.values() if f['name'] != robot.name]   # a ball may be static
-
-    def moved(facts):
-        return trace.counter('fed', facts['name']) + trace.counter('placed', facts['name'])
-
-    fits = [f for f in others if moved(f) or _in(f.get('sphere'), bounds)]
+    moved = lambda name: trace.counter('fed', name) + trace.counter('placed', name)  # noqa: E731
+    others = [f for f in trace.models.values() if f['name'] != robot.name and not (
+        parts.cameras(f) or (parts.drive_topics(f) and f.get('sphere') is None))]
+    spheres = [f for f in others if _radius_fits(f.get('sphere'), bounds)]
+    if named and trace.seen(named):
+        rivals = [f for f in spheres if moved(f['name']) and f['name'] != named]
+        if _teacher(profile, 'ball') or moved(named) or not rivals:
+            return Role(named, '%s, as %s' % (_code(named), 'grading.yaml names it for this '
+                                              'submission' if _teacher(profile, 'ball')
+                                              else 'the profile names it'))
+    elif _teacher(profile, 'ball'):
+        return Role(None, 'grading.yaml names the ball %s, which the run does not have'
+                    % _code(named))
+    fits = spheres or [f for f in others if moved(f['name'])]
     if not fits:
-        if not trace.models:
-            return Role(None, 'no model %s in the ground truth, and the simulator described no '
-                              'model: the ball cannot be told' % _code(named))
-        return Role(None, 'no ball in the world: no model %s, none that a command moved, no '
-                          'sphere%s' % (_code(named), ' of radius %g to %g m' % tuple(bounds)
-                                        if bounds else ''), absent=True)
+        return _nothing_described(trace, 'ball') or Role(
+            None, 'no ball in the world: no model %s, no sphere%s, none that a command moved'
+                  % (_code(named), ' of radius %g to %g m' % tuple(bounds) if bounds else ''),
+            absent=True)
     best = max(sorted(fits, key=lambda f: f['name']), key=lambda f: (
-        moved(f) > 0, _in(f.get('sphere'), bounds), moved(f), trace.travelled(f['name'])))
+        moved(f['name']), trace.travelled(f['name'])))
     reasons = []
+    if best.get('sphere') is not None:
+        reasons.append('a sphere of radius %g m' % best['sphere'])
     if trace.counter('fed', best['name']):
         reasons.append('moved through %s (%d commands)' % (
-            ', '.join(_drive_topics(best)), trace.counter('fed', best['name'])))
+            ', '.join(parts.drive_topics(best)), trace.counter('fed', best['name'])))
     if trace.counter('placed', best['name']):
         reasons.append('placed %d times by set_model_state/set_link_state'
                        % trace.counter('placed', best['name']))
-    if best.get('sphere') is not None:
-        reasons.append('a sphere of radius %g m' % best['sphere'])
-    return Role(best['name'], '%s: %s (no model %s)' % (
-        _code(best['name']), ', '.join(reasons), _code(named)))
+    there = ('%s is there, but nothing moved it' % _code(named) if trace.seen(named)
+             else 'no model %s' % _code(named))
+    return Role(best['name'], '%s: %s (%s)' % (_code(best['name']), ', '.join(reasons), there))
 
 
 def head_fragment(profile):
@@ -271,13 +264,10 @@ def head_fragment(profile):
 def find(trace, profile):
     """The run's :class:`Roles`."""
     robot = find_robot(trace, profile)
-    head, camera = find_head(trace, robot, head_fragment(profile),
-                             'grading.yaml asks for this submission'
-                             if 'head' in (profile.get('teacher_named') or ()) else
-                             'the profile asks')
+    head, camera = find_head(trace, robot, head_fragment(profile), _teacher(profile, 'head'))
     chosen = profile.get('camera')
     if chosen and chosen in trace.models:        # the profile's choice of whose camera to show
-        served = [c for c in _cameras(trace.models[chosen]) if c[2]]
+        served = [c for c in parts.cameras(trace.models[chosen]) if c[2]]
         if served:
             camera = Role(served[0][2], '%s on %s, as the profile asks' % (
                 _code(served[0][0]), _code(chosen)))

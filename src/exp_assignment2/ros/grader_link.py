@@ -9,6 +9,7 @@ import roslib.message
 
 from exp_assignment2.sim.ground_truth import GroundTruth, GroundTruthLink, SOCKET_ENV, \
     TOPICS_ENV
+from exp_assignment2.sim.plugins.ros_io import read_as
 
 RTF_ENV = 'EXP2_REAL_TIME_FACTOR'     # the grader's real_time_factor, over the launch file's
 
@@ -39,12 +40,8 @@ class TopicRelay(object):
         message = raw
         if isinstance(raw, rospy.AnyMsg):
             cls = roslib.message.get_message_class(raw._connection_header.get('type', ''))
-            if cls is None:
-                return
-            message = cls()
-            try:
-                message.deserialize(raw._buff)
-            except Exception:       # a malformed message: the grader sees none
+            message = read_as(raw, cls) if cls is not None else None
+            if message is None:      # malformed, or of no type this machine knows
                 return
         self.truth.topic(self.engine.time, self.topic, message_dict(message))
 

@@ -48,21 +48,40 @@ class Watched(rospy.SubscribeListener):
         return self.count > 0
 
 
+def read_as(raw, cls):
+    """A raw message (``rospy.AnyMsg``) as a ``cls``; None when it is another type
+    (its connection's md5sum is not ``cls``'s: ROS would not have connected the
+    two) or does not read as one."""
+    header = getattr(raw, '_connection_header', None) or {}
+    if header.get('md5sum') not in (None, '*', cls._md5sum):
+        return None
+    message = cls()
+    try:
+        message.deserialize(raw._buff)
+    except Exception:        # a malformed message: nobody sees it
+        return None
+    message._connection_header = header
+    return message
+
+
 def subscribe(topic, cls, callback, **kwargs):
     """A ``rospy.Subscriber`` whose ``callback`` always gets a ``cls``. rospy
     shares one subscription per topic in a node, of the first subscriber's
     type: where a grader's relay (:mod:`exp_assignment2.ros.grader_link`, which
     takes any type) subscribed first, what comes is raw; it is read here as
     ``cls``, so that the student's commands reach the world whatever the grader
-    records. A message that does not read as ``cls`` is left out."""
+    records. A message of another type is left out with a warning, as Gazebo's
+    plugin would never have been connected to its publisher."""
+    wrong = RefusalLog(topic, rospy.logwarn, period=5.0, what='ignored')
+
     def typed(message):
         if isinstance(message, rospy.AnyMsg):
-            raw, message = message, cls()
-            try:
-                message.deserialize(raw._buff)
-            except Exception:        # another type on the topic: rospy would not connect it
+            raw, message = message, read_as(message, cls)
+            if message is None:
+                wrong('a %s is not a %s: ignored' % (
+                    (getattr(raw, '_connection_header', None) or {}).get('type', '?'),
+                    cls._type))
                 return
-            message._connection_header = getattr(raw, '_connection_header', {})
         callback(message)
     return rospy.Subscriber(topic, cls, typed, **kwargs)
 
