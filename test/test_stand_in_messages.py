@@ -3,7 +3,8 @@ they define imports from the built workspace, and the types of ROS Noetic's
 desktop-full they stand in for have Noetic's md5sums, so that a node built on a
 stand-in talks to one built on the real package (and a bag recorded on a
 student's machine plays back here). Needs the built workspace (``bash
-tools/run setup``; tools/run test sources it); no ROS master."""
+tools/run setup``; tools/run test sources it); no ROS master. The older
+stand-ins' md5sums (gazebo_msgs, control_msgs, ...): test/unit/test_stand_ins.py."""
 import importlib
 import os
 
