@@ -47,3 +47,23 @@ def test_xacro_on_path_and_the_tf_tools_are_ross(tmp_path):
     assert found == ['/usr/lib/tf/tf_echo', '/usr/lib/tf/view_frames',
                      '/usr/lib/tf/static_transform_publisher',
                      '/usr/lib/tf2_ros/static_transform_publisher'], proc.stdout + proc.stderr
+
+
+DESKTOP_FULL_NODES = ['joint_state_publisher joint_state_publisher',
+                      'joint_state_publisher_gui joint_state_publisher_gui',
+                      'image_view image_view', 'dynamic_reconfigure dynparam']
+
+
+def test_desktop_full_nodes_a_launch_file_names_are_found_by_rosrun(tmp_path):
+    """Nodes every desktop-full had, which launch files of URDF models and
+    cameras start (Debian's, installed by the shell: docs/original_env_supplies.md)."""
+    env = dict(os.environ, ROS_HOME=str(tmp_path / 'ros_home'))
+    env['PATH'] = '/usr/bin:' + env.get('PATH', '')
+    script = ''.join('rosrun --prefix "echo found" %s\n' % node for node in DESKTOP_FULL_NODES)
+    proc = subprocess.run(['bash', SHELL, 'bash', '-ec', script], cwd=str(tmp_path), env=env,
+                          stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                          universal_newlines=True, timeout=300)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    found = [line.split()[1] for line in proc.stdout.splitlines() if line.startswith('found ')]
+    assert [os.path.basename(path) for path in found] == \
+        [node.split()[1] for node in DESKTOP_FULL_NODES], proc.stdout + proc.stderr

@@ -28,6 +28,20 @@ export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"
 # tf-tools, tf2-tools: rosrun tf tf_echo / view_frames, static_transform_publisher of tf and tf2_ros
 APT_PACKAGES=(python3-tf python3-scipy python3-opencv python3-numpy python3-pip python3-cv-bridge
               tf-tools tf2-tools)
+# The rest of ROS Noetic's desktop-full that Debian has and students' code may import or
+# start, which every desktop-full install had (docs/original_env_supplies.md, "ROS Noetic
+# desktop-full, package by package"); the -dev ones bring the package.xml that rosrun needs.
+DESKTOP_FULL_PACKAGES=(
+  python3-angles python3-bond python3-bondpy python3-smclib python3-nodelet
+  python3-nodelet-topic-tools python3-dynamic-reconfigure libdynamic-reconfigure-config-init-mutex-dev
+  python3-diagnostic-msgs python3-diagnostic-updater python3-diagnostic-analysis
+  python3-diagnostic-common-diagnostics python3-shape-msgs python3-stereo-msgs python3-map-msgs
+  python3-pcl-msgs python3-polled-camera python3-rviz python3-laser-geometry
+  python3-interactive-markers python3-image-geometry python3-camera-calibration-parsers
+  python3-tf-conversions python3-tf2-geometry-msgs python3-tf2-sensor-msgs python3-tf2-kdl
+  python3-pykdl python3-actionlib-tools joint-state-publisher joint-state-publisher-gui
+  ros-image-view libimage-view-dev
+)
 IMUTILS_VERSION=0.5.4
 XACRO_VERSION=1.13.3    # ROS 1's xacro (PyPI's 2.x is ROS 2's), for $(find xacro)/xacro
 
@@ -50,7 +64,7 @@ while [ $# -gt 0 ]; do
 done
 
 # Installs are skipped when present, so this is cheap after the first run.
-install_debian original-env "${APT_PACKAGES[@]}"
+install_debian original-env "${APT_PACKAGES[@]}" "${DESKTOP_FULL_PACKAGES[@]}"
 install_pypi original-env imutils "imutils==$IMUTILS_VERSION"
 install_pypi original-env xacro "xacro==$XACRO_VERSION"
 

@@ -6,7 +6,11 @@ components CMake cannot find (asking CMake itself, the way catkin looks them
 up), and gives each a stand-in: a ``<name>Config.cmake`` that is found and
 provides nothing (no headers, no libraries). C++ code that includes a
 stand-in's headers still fails to compile, with the compiler naming the
-header.
+header. The message packages the workspace builds from tools/stand_ins
+(desktop-full's actionlib_tutorials, turtlesim, ...; gazebo_msgs, motion_plan)
+are found by the probe like any installed package, so they are the real
+thing to CMake (their messages, headers and Python modules), never an empty
+stand-in.
 """
 import os
 import re
