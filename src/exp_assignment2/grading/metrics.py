@@ -14,6 +14,7 @@ its result says why, and it is neither passed nor failed.
 import math
 
 from exp_assignment2.grading import roles as roles_
+from exp_assignment2.grading.truth import read_record
 
 RESET_JUMP = 3.0     # m in one sample (0.1 s): a reset or a teleport, not a path
 
@@ -44,6 +45,12 @@ class Trace(object):
         self.topics = list(topics)
         self.errors = list(errors)
         self.models = dict(models or {})
+
+    @classmethod
+    def from_record(cls, record_dir, errors=()):
+        """The run's trace, from its record (:func:`~.truth.read_record`)."""
+        found = read_record(record_dir)
+        return cls(found.states, found.topics, errors, found.models)
 
     @property
     def duration(self):

@@ -22,9 +22,9 @@ KEYS = {'name', 'title', 'duration', 'default_commands', 'world_commands', 'dela
         'record_topics', 'checks'}
 CHECK_KEYS = {'name', 'metric', 'min', 'max', 'reach', 'joint', 'topic', 'tolerance',
               'points', 'zero', 'visibility'}      # the last three: the rubric (grading.scores)
-DEFAULTS = {'title': '', 'world_commands': [], 'delay': 5, 'cpu_per_run': 1.0, 'memory_limit_mb': 3000,
-            'process_limit': 512, 'ball': None, 'ball_radius': None, 'camera': None,
-            'record_topics': []}
+DEFAULTS = {'title': '', 'world_commands': [], 'delay': 5, 'cpu_per_run': 1.0,
+            'memory_limit_mb': 3000, 'process_limit': 512, 'ball': None, 'ball_radius': None,
+            'camera': None, 'record_topics': []}
 
 
 class ProfileError(Exception):

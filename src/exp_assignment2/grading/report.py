@@ -15,12 +15,11 @@ import os
 import shutil
 import statistics
 
-from exp_assignment2.grading import feedback, figures, gradescope, record, report_failures, \
-    report_judged, report_marks
+from exp_assignment2.grading import feedback, figures, gradescope, metrics, record, \
+    report_failures, report_judged, report_marks
 from exp_assignment2.grading import roles as roles_
 from exp_assignment2.grading.logs import read_log
 from exp_assignment2.grading.report_camera import camera_section, window_pictures
-from exp_assignment2.grading.truth import trace_of
 from exp_assignment2.grading.verdicts import VERDICTS
 
 COLOURS = {'passed': '#2e7d32', 'failed_checks': '#ef6c00', 'crashed': '#c62828',
@@ -32,7 +31,8 @@ vertical-align:top}th{background:#eee;cursor:pointer}.v{color:#fff;padding:2px 6
 border-radius:3px;white-space:nowrap}pre{background:#f6f6f6;padding:8px;overflow-x:auto;
 font-size:12px;max-height:30em}.fail{color:#c62828}.ok{color:#2e7d32}img{border:1px solid #ddd}
 .frames img{margin-right:6px}.frames img.window{max-width:760px}
-.flaky{background:#fff3cd;padding:1px 4px}.nj{color:#8a6d3b;font-style:italic}'''
+.flaky{background:#fff3cd;padding:1px 4px}
+.nj{color:#8a6d3b;font-style:italic}'''
 SORT_JS = '''function sortBy(th){var t=th.closest('table'),i=[].indexOf.call(th.parentNode.children,th),
 b=t.tBodies[0],rows=[].slice.call(b.rows),asc=th.dataset.asc!=='1';th.dataset.asc=asc?'1':'0';
 rows.sort(function(x,y){var a=x.cells[i].dataset.key||x.cells[i].textContent,
@@ -112,7 +112,7 @@ def _verdict_badge(verdict, pending=0):
 def _run_pictures(run, runs_dir, img_dir, profile):
     """The run's figures and chosen frames, copied next to its page."""
     record = os.path.join(runs_dir, run['label'], 'record')
-    trace = trace_of(record)
+    trace = metrics.Trace.from_record(record)
     roles = roles_.of_run(run, trace, profile)
     label = run['label']
     pictures = {}
@@ -167,12 +167,13 @@ def _page(summary, runs, runs_dir, pictures, profile):
         parts.append('<h2>Checks</h2><table><tr><th>check</th><th>figure</th><th>threshold</th>'
                      '<th></th><th>points</th><th>detail</th></tr>')
         for check in summary['checks']:
+            css, word = report_judged.outcome(check)
             parts.append('<tr><td>%s</td><td>%s</td><td>%s</td><td class="%s">%s</td>'
-                         '%s<td>%s</td></tr>' % ((
+                         '%s<td>%s</td></tr>' % (
                              _e(check['name']), _e(_figure_value(check['value'])),
-                             _e(check['threshold'])) + report_judged.outcome(check) + (
+                             _e(check['threshold']), css, word,
                              report_marks.points_cell(check),
-                             report_judged.why_html(check['detail']))))
+                             report_judged.why_html(check['detail'])))
         parts.append('</table>')
     parts += report_judged.judged_section(main, profile['checks'])
     if pictures.get('top') or pictures.get('head'):

@@ -190,9 +190,3 @@ def read_record(record_dir):
                 models[record['facts']['name']] = record['facts']
     return TruthRecord(states, topics, hello, models)
 
-
-def trace_of(record_dir, errors=()):
-    """The run's :class:`~.metrics.Trace`, from its record."""
-    from exp_assignment2.grading.metrics import Trace
-    found = read_record(record_dir)
-    return Trace(found.states, found.topics, errors, found.models)

@@ -41,7 +41,6 @@ import os
 from exp_assignment2.grading import logs as logs_
 from exp_assignment2.grading import metrics
 from exp_assignment2.grading import roles as roles_
-from exp_assignment2.grading.truth import trace_of
 
 VERDICTS = ('passed', 'failed_checks', 'crashed', 'timed_out', 'not_started', 'not_built',
             'grader_error')
@@ -63,14 +62,23 @@ class Seen(object):
         self.memory_limit_mb = memory_limit_mb
         self.died, self.errors = list(died), list(errors)
         self.started_nothing, self.launch_errors = list(started_nothing), list(launch_errors)
-        self._checks = checks
-        self.roles = None          # grading.roles.Roles, once the checks were judged
+        self._checks = checks      # a list, or a function judging (roles, checks) when asked
+        self._roles = None
+
+    def _judge(self):
+        if callable(self._checks):
+            self._roles, self._checks = self._checks()
 
     @property
     def checks(self):
-        if callable(self._checks):
-            self._checks = self._checks()
+        self._judge()
         return self._checks
+
+    @property
+    def roles(self):
+        """The :class:`~.roles.Roles` the checks judged (None before any ground truth)."""
+        self._judge()
+        return self._roles
 
     @property
     def ran(self):
@@ -254,11 +262,11 @@ def gather(work, record_dir, result, profile):
             nothing.append((0, index, names.get(index, rel), line))
     seen.started_nothing = [(command, line) for _, _, command, line in sorted(nothing)]
 
-    def checks():
-        trace = trace_of(record_dir, seen.errors)
-        seen.roles = roles_.find(trace, profile)
-        return metrics.evaluate(trace, profile, seen.roles)
-    seen._checks = checks if states else None
+    def judged():
+        trace = metrics.Trace.from_record(record_dir, seen.errors)
+        found = roles_.find(trace, profile)
+        return found, metrics.evaluate(trace, profile, found)
+    seen._checks = judged if states else None
     return seen
 
 
