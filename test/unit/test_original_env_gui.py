@@ -83,8 +83,10 @@ def test_imshow_from_two_threads_does_not_hang(xdisplay):
                             stderr=subprocess.PIPE, universal_newlines=True)
     try:
         assert read_line(proc, time.monotonic() + 15) == 'SHOWN 30 30', 'imshow/waitKey hung'
-        tree = ''
-        for _ in range(20):  # the GUI thread maps the windows a few ms later
+        tree, deadline = '', time.monotonic() + 10
+        # the GUI thread maps the windows a few ms later; seconds on a loaded machine
+        # (CI's three workers beside simulations: 2 s was once not enough)
+        while time.monotonic() < deadline:
             tree = subprocess.run(['xwininfo', '-root', '-tree'], env=env, timeout=10,
                                   stdout=subprocess.PIPE, universal_newlines=True).stdout
             if '"cam_normal"' in tree and '"cam_play"' in tree:
