@@ -3,7 +3,7 @@
 [--duration 200] [--jobs K ...] [--fixtures] [--scheduler tcp://HOST:PORT] [--dask K]``.
 
 By default it grades a class: ``--count`` copies of a submission shaped like
-the real ones (test/grading_fixtures.py's ``make_course_shaped``: the course
+the real ones (test/course_shaped.py's ``make_course_shaped``: the course
 robot's 800 x 800 camera at 30 Hz, Gazebo's window, a node that decodes,
 blurs and searches every frame and ``cv2.imshow``s it with the circle drawn,
 a SMACH state machine), each run with its display. ``--fixtures`` grades the grader's
@@ -39,6 +39,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(REPO, 'test'))
+import course_shaped  # noqa: E402
 import grading_fixtures  # noqa: E402
 
 
@@ -52,7 +53,7 @@ def make_folder(dest, count, fixtures=False):
     if not fixtures:
         os.makedirs(dest)
         for i in range(count):
-            grading_fixtures.make_course_shaped(os.path.join(dest, 'student_%02d' % (i + 1)))
+            course_shaped.make_course_shaped(os.path.join(dest, 'student_%02d' % (i + 1)))
         return dest
     grading_fixtures.make_folder(dest)
     names = sorted(os.listdir(dest))

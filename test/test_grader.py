@@ -26,43 +26,12 @@ import sys
 import pytest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 import grading_fixtures  # noqa: E402
+import miro_fixtures  # noqa: E402
+from grading_run import FAST, GRADE, snapshot  # noqa: E402
 
 pytestmark = pytest.mark.xdist_group('grader')
-GRADE = ['bash', os.path.join(REPO, 'tools', 'run'), 'grade']
-# short runs, at twice real time: the fixture dog reaches its ball in 5 s
-FAST = ['--duration', '30', '--real-time-factor', '2', '--jobs', '2']
-
-
-def snapshot(folder):
-    out = {}
-    for root, dirs, files in os.walk(folder):
-        for name in dirs + files:
-            st = os.lstat(os.path.join(root, name))
-            out[os.path.relpath(os.path.join(root, name), folder)] = (st.st_size, st.st_mtime_ns,
-                                                                     st.st_mode)
-    return out
-
-
-@pytest.fixture(scope='module')
-def graded(tmp_path_factory):
-    base = tmp_path_factory.mktemp('grader')
-    folder = grading_fixtures.make_folder(str(base / 'class'))
-    # a file beside the folder, as another course's files would be
-    canary = base / 'canary.txt'
-    canary.write_text('untouched')
-    before = snapshot(str(base))
-    out = str(base / 'report')
-    proc = subprocess.run(GRADE + [folder, '--out', out] + FAST, stdout=subprocess.PIPE,
-                          stderr=subprocess.STDOUT, universal_newlines=True, timeout=1500)
-    with open(os.path.join(out, 'report.json')) as f:
-        report = json.load(f)
-    return {'base': str(base), 'folder': folder, 'out': out, 'before': before, 'proc': proc,
-            'report': report,
-            'by_name': {s['name']: s for s in report['submissions']},
-            'runs': {r['label']: r for r in report['runs']}}
 
 
 def test_each_submission_gets_its_verdict(graded):
@@ -246,39 +215,6 @@ def test_students_earlier_ros_and_the_courses_own_world(graded):
     assert 'simulator.py' in own['truth']['simulator']
 
 
-def test_a_renamed_robot_head_and_ball_are_judged_by_their_roles(graded):
-    """robot2 in its own namespace, its head on camera_joint moved by a
-    camera_position_controller, the ball called toy: the dog plays as the one
-    that works does, and passes as it; the page names what it judged and why,
-    and its camera pictures are robot2's own."""
-    run = graded['runs']['renamed']
-    assert run['verdict'] == 'passed', (run['reason'], run.get('checks'))
-    assert {k: run['roles'][k]['name'] for k in ('robot', 'head', 'camera', 'ball')} == {
-        'robot': 'robot2', 'head': 'camera_joint', 'camera': 'robot2/camera1', 'ball': 'toy'}
-    assert run['roles']['namespace'] == 'robot2'
-    checks = {c['name']: c for c in run['checks']}
-    assert checks['head turns at the ball']['value'] >= 0.6
-    assert checks['head turns at the ball']['detail'].startswith('camera_joint, ')
-    for page in ('pages', 'feedback'):
-        with open(os.path.join(graded['out'], page, 'renamed.html')) as f:
-            text = f.read()
-        assert '<code>camera_joint</code>, the joint that turns camera <code>camera1</code>' \
-            in text, page
-        assert '<code>robot2</code>: driven through /robot2/cmd_vel' in text, page
-    frames = os.listdir(os.path.join(graded['out'], 'runs', 'renamed', 'record', 'frames'))
-    assert frames and all(f.startswith('robot2_camera1_') for f in frames)
-    assert os.path.exists(os.path.join(graded['out'], 'pages', 'img',
-                                       'renamed_closest_approach.jpg'))
-
-
-def test_what_ros_desktop_full_had_is_there(graded):
-    """A node importing actionlib_tutorials.msg (every desktop-full install had
-    it) runs as on the student's machine: no error, the dog plays."""
-    run = graded['runs']['tutorials']
-    assert run['verdict'] == 'passed', (run['reason'], run.get('errors'))
-    assert run['error_count'] == 0
-
-
 def test_miro_submissions_under_the_miro_profile(tmp_path):
     """As a teacher grades after the README's set-up: the profile's world
     (miro_world.launch, as Stage was) first, then each submission's README
@@ -287,8 +223,8 @@ def test_miro_submissions_under_the_miro_profile(tmp_path):
     its own name (the world is this package's, its simulator started through
     the workspace's devel-space relay)."""
     folder = tmp_path / 'miro_class'
-    grading_fixtures.make_miro(str(folder / 'miro_student'))
-    grading_fixtures.make_miro(str(folder / 'miro_own_name'), package='assignment1')
+    miro_fixtures.make_miro(str(folder / 'miro_student'))
+    miro_fixtures.make_miro(str(folder / 'miro_own_name'), package='assignment1')
     out = str(tmp_path / 'report')
     proc = subprocess.run(GRADE + [str(folder), '--out', out, '--profile', 'miro', '--jobs', '2',
                                    '--duration', '60', '--real-time-factor', '2'],
