@@ -38,6 +38,8 @@ def graded(tmp_path_factory):
     out = str(base / 'report')
     proc = subprocess.run(GRADE + [folder, '--out', out] + FAST, stdout=subprocess.PIPE,
                           stderr=subprocess.STDOUT, universal_newlines=True, timeout=1500)
+    assert os.path.exists(os.path.join(out, 'report.json')), (
+        'grade exited %s with no report:\n%s' % (proc.returncode, proc.stdout[-3000:]))
     with open(os.path.join(out, 'report.json')) as f:
         report = json.load(f)
     return {'base': str(base), 'folder': folder, 'out': out, 'before': before, 'proc': proc,

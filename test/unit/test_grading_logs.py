@@ -133,3 +133,38 @@ def test_the_runner_sees_a_student_death_but_not_a_missing_node(tmp_path):
     assert not logs.student_node_died(str(tmp_path))
     (tmp_path / 'logs' / 'command-1.log').write_text(PY_CRASH)
     assert logs.student_node_died(str(tmp_path))
+
+
+HANDSHAKE = '''[rospy.internal][ERROR] 2026-11-27 05:13:57,820: Inbound TCP/IP connection failed:
+Traceback (most recent call last):
+  File "/usr/lib/python3/dist-packages/rospy/impl/tcpros_base.py", line 334, in _tcp_server_callback
+    header = read_ros_handshake_header(sock, BytesIO(), buff_size)
+rosgraph.network.ROSHandshakeException: connection from sender terminated before handshake header received. 0 bytes were received. Please check sender for additional details.
+'''
+
+
+def test_rospy_transport_noise_is_no_python_error():
+    """A peer that hung up before its handshake (seen in a CI run, in the
+    simulator's log): rospy logs a traceback; nothing the node's code did."""
+    assert logs.python_errors([('ros_home/log/r/dog-5.log', HANDSHAKE)]) == []
+
+
+def test_the_simulators_own_log_is_the_graders(tmp_path):
+    """roslaunch's log names each node's command line and its log file: the
+    simulator's (gzserver's, simulator.py's) are left out of the student's
+    errors, a student node's are kept. Inside the sandbox the run's directory
+    has another path: its ROS_HOME is the same place."""
+    launch = ("[roslaunch][INFO] x: process[gazebo-1]: start w/ args [['/ws/gazebo_ros/scripts/"
+              "gzserver', '-e', 'ode', '__name:=gazebo', '__log:=/tmp/exp2-grade-x/runs/L/work/"
+              "ros_home/log/r/gazebo-1.log']]\n"
+              "[roslaunch][INFO] x: process[dog-5]: start w/ args [['/w/src/scripts/dog.py', "
+              "'__name:=dog', '__log:=%s/ros_home/log/r/dog-5.log']]\n" % tmp_path)
+    files = {'ros_home/log/r/roslaunch-host-1.log': launch,
+             'ros_home/log/r/gazebo-1.log': 'Traceback (most recent call last):\nValueError: x\n',
+             'ros_home/log/r/dog-5.log': 'Traceback (most recent call last):\nValueError: y\n'}
+    for rel, text in files.items():
+        path = tmp_path / rel
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    sizes = {rel: len(text) for rel, text in files.items()}
+    assert logs.simulator_logs(str(tmp_path), sizes) == {'ros_home/log/r/gazebo-1.log'}

@@ -42,7 +42,13 @@ ABORT = re.compile(r'(qt\.qpa\.\S+: .*|.*Qt platform plugin.*|.*[Cc]annot (?:ope
                    r'Fatal Python error: .*|(?:free|malloc|realloc|double free)\b.*\(\).*)$')
 SIMULATOR = ('scripts/simulator.py', '/gzserver')
 QUIET_ENDINGS = ('KeyboardInterrupt', 'ROSInterruptException', 'rospy.exceptions.ROSInterrupt',
-                 'ROSTimeMovedBackwardsException')
+                 'ROSTimeMovedBackwardsException',
+                 # rospy's transport, in any node's log, when a peer hangs up before its
+                 # handshake (a probe, a client that exited): nothing the node's code did
+                 'ROSHandshakeException: connection from sender terminated before handshake')
+# roslaunch's own log: each node's whole command line, its __log:= file among its args
+START_ARGS = re.compile(r'process\[[^\]]+\]: start w/ args \[\[(.*)\]\]')
+QUOTED_LOG = re.compile(r"__log:=([^'\s,\]]+)")
 TRACEBACK = re.compile(r'^Traceback \(most recent call last\):')
 LOG_ARG = re.compile(r'__log:=(\S+)')
 COMMAND_LOG = re.compile(r'^logs/command-(\d+)\.log$')
@@ -64,6 +70,22 @@ def run_logs(work, sizes):
     names = sorted(sizes, key=lambda r: (not r.startswith('logs/'), r))
     return [(rel, read_log(work, rel, sizes)) for rel in names
             if not os.path.basename(rel).startswith(('master', 'rosout', 'roslaunch-'))]
+
+
+def simulator_logs(work, sizes):
+    """The rel paths of the simulator's own log files (its ``__log:=`` file and
+    ``-stdout``/``-stderr``), as roslaunch's logs give its command line: what
+    the simulator says is the grader's, never the student's."""
+    found = set()
+    for rel in sizes:
+        if not os.path.basename(rel).startswith('roslaunch-'):
+            continue
+        for match in START_ARGS.finditer(read_log(work, rel, sizes)):
+            if is_simulator(match.group(1)):
+                log = QUOTED_LOG.search(match.group(1))
+                if log:
+                    found.update(r for r, _ in _own_logs('__log:=' + log.group(1), work, sizes))
+    return found
 
 
 def command_index(rel):
@@ -149,6 +171,10 @@ def _own_logs(cmd, work, sizes):
     found = []
     for candidate in (path, base + '-stdout.log', base + '-stderr.log'):
         rel = os.path.relpath(candidate, work) if os.path.isabs(candidate) else candidate
+        if rel.startswith('..') and '/ros_home/' in candidate:
+            # the sandbox sees the run's directory elsewhere (/tmp/exp2-grade-*/runs/L/work):
+            # its ROS_HOME is the same place in both
+            rel = 'ros_home/' + candidate.split('/ros_home/', 1)[1]
         if rel.startswith('..') or rel not in sizes:
             continue
         text = read_log(work, rel, sizes)

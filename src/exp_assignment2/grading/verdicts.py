@@ -209,6 +209,7 @@ def gather(work, record_dir, result, profile):
     """The :class:`Seen` of a finished run."""
     sizes = result.get('log_sizes') or {}
     run_logs = logs_.run_logs(work, sizes)
+    simulators = logs_.simulator_logs(work, sizes)    # the grader's: not the student's errors
     events = result.get('events') or []
     built = next((e for e in events if e.get('event') == 'built'), None)
     names = _command_names(result)
@@ -227,7 +228,8 @@ def gather(work, record_dir, result, profile):
                 sim_time=(result.get('truth') or {}).get('sim_time') or 0.0,
                 duration=float(result.get('duration') or profile['duration']),
                 memory_limit_mb=profile['memory_limit_mb'],
-                errors=logs_.python_errors(run_logs),
+                errors=logs_.python_errors(
+                    [(rel, text) for rel, text in run_logs if rel not in simulators]),
                 display_error=next((e['error'] for e in events if e.get('event') == 'display'
                                     and e.get('error')), None))
     if not seen.ran:
