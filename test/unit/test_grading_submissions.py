@@ -6,8 +6,8 @@ import zipfile
 
 import pytest
 
-from exp_assignment2.grading.submissions import SubmissionError, discover, find_package, \
-    package_name, unpack
+from exp_assignment2.grading import packages
+from exp_assignment2.grading.submissions import SubmissionError, discover, unpack
 
 PACKAGE_XML = '<package format="2"><name>%s</name><version>0.0.1</version></package>'
 
@@ -29,6 +29,10 @@ def snapshot(folder):
     return out
 
 
+def unpack_root(submission, dest):
+    return unpack(submission, dest).root
+
+
 def test_a_folder_of_directories_and_archives(tmp_path):
     folder = tmp_path / 'class'
     make_package(str(folder / 'alice'))
@@ -40,18 +44,40 @@ def test_a_folder_of_directories_and_archives(tmp_path):
         info = tarfile.TarInfo('package.xml')
         info.size = len(data)
         t.addfile(info, io.BytesIO(data))
-    (folder / 'notes.txt').write_text('not a submission')
     (folder / 'grading.yaml').write_text('duration: 10\n')
     submissions, notes = discover(str(folder))
     assert [(s.name, s.kind) for s in submissions] == [
         ('alice', 'dir'), ('bob', 'dir'), ('carol', 'zip'), ('dave', 'tar')]
-    assert notes == ['notes.txt: not a submission (a folder, .zip, .tar.gz or .tgz): skipped']
+    assert notes == []
     before = snapshot(str(folder))
     names = []
     for s in submissions:
-        names.append(package_name(unpack(s, str(tmp_path / 'runs' / s.name))))
-    assert names == ['exp_assignment2', 'exp_assignment2', 'carol_pkg', 'dave_pkg']
+        root = unpack_root(s, str(tmp_path / 'runs' / s.name))
+        names.append([p.name for p in packages.find(root)])
+    assert names == [['exp_assignment2'], ['exp_assignment2'], ['carol_pkg'], ['dave_pkg']]
     assert snapshot(str(folder)) == before          # nothing in the folder was written
+
+
+def test_every_entry_gets_a_row_whatever_it_is(tmp_path):
+    """A loose file, a fifo, a link, a .rar: each a submission that cannot be
+    taken, with why; the good one beside them is as it was."""
+    folder = tmp_path / 'class'
+    make_package(str(folder / 'good'))
+    (folder / 'notes.txt').write_text('not a submission')
+    os.mkfifo(str(folder / 'pipe'))
+    os.symlink('/etc', str(folder / 'elsewhere'))
+    (folder / 'old.rar').write_bytes(b'Rar!')
+    submissions, notes = discover(str(folder))
+    kinds = {s.name: (s.kind, s.why) for s in submissions}
+    assert kinds['good'] == ('dir', None)
+    assert kinds['notes.txt'][0] == 'other' and 'a single file' in kinds['notes.txt'][1]
+    assert kinds['pipe'] == ('other', 'not a file nor a folder (a fifo, a socket or a device)')
+    assert kinds['elsewhere'][0] == 'other' and 'a link (-> /etc), not followed' in \
+        kinds['elsewhere'][1]
+    assert kinds['old'][0] == 'other' and 'does not read' in kinds['old'][1]
+    assert len(notes) == 4
+    with pytest.raises(SubmissionError, match='a fifo'):
+        unpack([s for s in submissions if s.name == 'pipe'][0], str(tmp_path / 'run'))
 
 
 def test_one_package_is_one_submission(tmp_path):
@@ -66,40 +92,71 @@ def test_an_empty_folder_is_one_clear_line(tmp_path):
         discover(str(tmp_path / 'empty'))
 
 
-@pytest.mark.parametrize('member, message', [
-    ('../escaped.txt', 'a path out of it'),
-    ('a/../../escaped.txt', 'a path out of it'),
-    ('/tmp/escaped.txt', 'an absolute path'),
-])
-def test_a_zip_that_escapes_is_refused(tmp_path, member, message):
+@pytest.mark.parametrize('member', ['../escaped.txt', 'a/../../escaped.txt', '/tmp/escaped.txt'])
+def test_a_member_out_of_the_archive_is_left_out(tmp_path, member):
     archive = tmp_path / 'bad.zip'
     with zipfile.ZipFile(str(archive), 'w') as z:
         z.writestr('pkg/package.xml', PACKAGE_XML % 'x')
         z.writestr(member, 'boo')
     submissions, _ = discover(str(archive))
-    with pytest.raises(SubmissionError, match=message):
-        unpack(submissions[0], str(tmp_path / 'run'))
+    got = unpack(submissions[0], str(tmp_path / 'run'))
+    assert got.notes == ['%s: left out: a path out of the archive' % member]
+    assert [p.name for p in packages.find(got.root)] == ['x']
     assert not (tmp_path / 'escaped.txt').exists()
     assert not os.path.exists('/tmp/escaped.txt')
 
 
-def test_a_tar_link_out_of_it_is_refused(tmp_path):
-    archive = tmp_path / 'bad.tgz'
+def _tar_link(t, name, target, kind=tarfile.SYMTYPE):
+    info = tarfile.TarInfo(name)
+    info.type, info.linkname = kind, target
+    t.addfile(info)
+
+
+def test_links_in_an_archive_kept_inside_left_out_when_they_point_out(tmp_path):
+    archive = tmp_path / 'ws.tgz'
     with tarfile.open(str(archive), 'w:gz') as t:
-        info = tarfile.TarInfo('pkg/secret')
-        info.type, info.linkname = tarfile.SYMTYPE, '/etc/shadow'
-        t.addfile(info)
-    submissions, _ = discover(str(archive))
-    with pytest.raises(SubmissionError, match='a link out of it: pkg/secret -> /etc/shadow'):
-        unpack(submissions[0], str(tmp_path / 'run'))
+        data = (PACKAGE_XML % 'dog').encode()
+        info = tarfile.TarInfo('ws/src/dog/package.xml')
+        info.size = len(data)
+        t.addfile(info, io.BytesIO(data))
+        _tar_link(t, 'ws/src/CMakeLists.txt', '/opt/ros/kinetic/share/catkin/cmake/toplevel.cmake')
+        _tar_link(t, 'ws/src/dog/manifest.xml', 'package.xml')             # inside: kept
+        _tar_link(t, 'ws/src/up', '.')
+        _tar_link(t, 'ws/src/sneaky', 'up/../../../../etc')              # resolves out
+        _tar_link(t, 'ws/src/dog/copy.xml', 'ws/src/dog/package.xml', tarfile.LNKTYPE)
+    got = unpack(discover(str(archive))[0][0], str(tmp_path / 'run'))
+    src = os.path.join(got.dest, 'ws', 'src')
+    assert not os.path.lexists(os.path.join(src, 'CMakeLists.txt'))
+    assert os.readlink(os.path.join(src, 'dog', 'manifest.xml')) == 'package.xml'
+    assert open(os.path.join(src, 'dog', 'copy.xml')).read() == PACKAGE_XML % 'dog'
+    assert not os.path.lexists(os.path.join(src, 'sneaky'))
+    assert any('CMakeLists.txt: left out: a link out of the submission (-> /opt/ros/kinetic'
+               in n for n in got.notes)
+    assert any(n.startswith('ws/src/sneaky: left out: a link out') for n in got.notes)
 
 
-def test_a_directory_with_a_link_out_is_refused(tmp_path):
-    package = make_package(str(tmp_path / 'class' / 'eve'))
+def test_a_catkin_workspace_folder_copied_as_handed_in(tmp_path):
+    """A workspace with catkin's toplevel link, committed build/ and devel/,
+    a fifo and a link inside: the link out and the fifo left out, noted."""
+    ws = tmp_path / 'class' / 'eve'
+    package = make_package(str(ws / 'src' / 'exp_assignment2'))
+    os.symlink('/opt/ros/kinetic/share/catkin/cmake/toplevel.cmake',
+               str(ws / 'src' / 'CMakeLists.txt'))
+    make_package(str(ws / 'devel' / 'share' / 'exp_assignment2'))
+    (ws / 'build').mkdir()
+    (ws / 'build' / 'Makefile').write_text('all:')
+    os.mkfifo(os.path.join(package, 'fifo'))
+    os.symlink('package.xml', os.path.join(package, 'alias.xml'))
     os.symlink('/etc', os.path.join(package, 'etc'))
-    submissions, _ = discover(str(tmp_path / 'class'))
-    with pytest.raises(SubmissionError, match='a link out of the submission'):
-        unpack(submissions[0], str(tmp_path / 'run'))
+    got = unpack(discover(str(tmp_path / 'class'))[0][0], str(tmp_path / 'run'))
+    assert [p.rel for p in packages.find(got.dest)] == ['src/exp_assignment2']
+    assert got.root == os.path.join(got.dest, 'src', 'exp_assignment2')   # what it wraps
+    assert not os.path.exists(os.path.join(got.dest, 'build'))
+    copy = got.root
+    assert os.readlink(os.path.join(copy, 'alias.xml')) == 'package.xml'
+    assert not os.path.lexists(os.path.join(copy, 'etc'))
+    assert sorted(n.split(':')[0] for n in got.notes) == [
+        'src/CMakeLists.txt', 'src/exp_assignment2/etc', 'src/exp_assignment2/fifo']
 
 
 def test_an_archive_too_large_is_refused(tmp_path):
@@ -119,19 +176,19 @@ def test_an_archive_that_does_not_unpack(tmp_path):
         unpack(submissions[0], str(tmp_path / 'run'))
 
 
-def test_no_package_and_two_packages(tmp_path):
+def test_packages_at_any_depth(tmp_path):
     (tmp_path / 'none').mkdir()
     (tmp_path / 'none' / 'README.md').write_text('hello')
-    with pytest.raises(SubmissionError, match='no package.xml in it'):
-        find_package(str(tmp_path / 'none'))
+    assert packages.find(str(tmp_path / 'none')) == []
     make_package(str(tmp_path / 'two' / 'a'), 'a')
     make_package(str(tmp_path / 'two' / 'b'), 'b')
-    with pytest.raises(SubmissionError, match='two packages in one submission: a, b'):
-        find_package(str(tmp_path / 'two'))
-    make_package(str(tmp_path / 'deep' / 'x' / 'y' / 'z' / 'w'))
-    (tmp_path / 'deep' / 'x' / 'other').mkdir()
-    with pytest.raises(SubmissionError, match='no package.xml at the top or one level down'):
-        find_package(str(tmp_path / 'deep'))
+    assert [p.name for p in packages.find(str(tmp_path / 'two'))] == ['a', 'b']
+    make_package(str(tmp_path / 'deep' / 'x' / 'y' / 'z' / 'w'), 'w')
+    make_package(str(tmp_path / 'deep' / 'x' / 'y' / 'z' / 'w' / 'inner'), 'inner')  # not seen
+    make_package(str(tmp_path / 'deep' / 'ignored' / 'p'), 'p')
+    (tmp_path / 'deep' / 'ignored' / 'CATKIN_IGNORE').write_text('')
+    assert [(p.name, p.rel) for p in packages.find(str(tmp_path / 'deep'))] == [
+        ('w', 'x/y/z/w')]
 
 
 def test_only_the_repositorys_simulator_may_send_the_ground_truth(tmp_path):

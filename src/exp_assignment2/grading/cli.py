@@ -14,13 +14,15 @@ import sys
 
 from exp_assignment2.grading import planning, profiles, report, tasks
 from exp_assignment2.grading.cluster import Cluster, ClusterError, lost_result, payload, \
-    refused_result, unpack_result
+    refused_result, rejected_result, unpack_result
 from exp_assignment2.grading.commands import TeacherFileError
 from exp_assignment2.grading.progress import Progress
 from exp_assignment2.grading.runner import Run, RunSettings
+from exp_assignment2.grading.planning import traceback_line
 from exp_assignment2.grading.submissions import SubmissionError
 
-EXIT_OK, EXIT_USAGE, EXIT_CLUSTER = 0, 2, 3
+# 4: the report is written, but some runs could not be graded (grader_error: run them again)
+EXIT_OK, EXIT_USAGE, EXIT_CLUSTER, EXIT_NOT_ALL_GRADED = 0, 2, 3, 4
 
 
 def _interrupt(*_):
@@ -89,16 +91,32 @@ def plan_runs(args, profile, out, log):
     return runs, profile
 
 
+def default_out(submissions):
+    """``./grading-report``, unless that is inside what is graded (a student
+    running ``grade .`` in their package): then beside it, ``NAME-grading-report``."""
+    out, folder = os.path.abspath('grading-report'), os.path.abspath(submissions)
+    if out == folder or out.startswith(folder + os.sep):
+        out = os.path.join(os.path.dirname(folder), os.path.basename(folder) + '-grading-report')
+    return out
+
+
 def grade(runs, cluster, progress):
     """Every Run as a Dask task; Ctrl-C ends every run (on every worker) and returns."""
     from concurrent.futures import CancelledError
     from distributed import KilledWorker, wait
     version = cluster.version
+    futures = {}
     for run in runs:
-        if run.spec.refused:       # the teacher's file is wrong about it
+        if run.spec.refused:       # the teacher's file is wrong about it, or the grader failed
             refused_result(run, run.spec.refused)
-    futures = {cluster.submit(payload(run, version)): run for run in runs
-               if not run.spec.refused}
+        elif run.spec.rejected:    # nothing to run: it does not unpack, it holds no package
+            rejected_result(run, run.spec.rejected)
+        else:
+            try:
+                futures[cluster.submit(payload(run, version))] = run
+            except Exception as exc:      # noqa: BLE001 -- the grader's fault, this run's only
+                refused_result(run, 'the grader could not send it to a worker (a fault of the '
+                               'grader\'s, not the student\'s): %s' % traceback_line(exc))
     pending = set(futures)
     try:
         while pending:
@@ -112,6 +130,10 @@ def grade(runs, cluster, progress):
                 except (KilledWorker, CancelledError, tasks.VersionMismatch, OSError,
                         RuntimeError) as exc:
                     lost_result(run, exc, cluster.started)
+                except Exception as exc:      # noqa: BLE001 -- this run's grader_error only
+                    refused_result(run, 'the grader failed with this run (a fault of the '
+                                   'grader\'s, not the student\'s): %s' % traceback_line(exc),
+                                   cluster.started.get(run.label) or [])
             for future in pending:
                 run = futures[future]
                 if run.label in cluster.started and run.state == 'waiting':
@@ -130,7 +152,7 @@ def grade(runs, cluster, progress):
 
 def main(argv=None):
     args = parse_args(sys.argv[1:] if argv is None else argv)
-    out = os.path.abspath(args.out or 'grading-report')
+    out = os.path.abspath(args.out) if args.out else default_out(args.submissions)
     log = lambda text: print('[grade] ' + text, file=sys.stderr, flush=True)  # noqa: E731
     try:
         # the profile by the one precedence: --profile, grading.yaml's, dog
@@ -181,6 +203,11 @@ def main(argv=None):
         similarity_step(args, out, log)
     log(summary_line(summaries, out))
     log(feedback_line(summaries, out))
+    ungraded = sorted(n for n, s in summaries.items() if s['verdict'] == 'grader_error')
+    if ungraded:
+        log('not graded, through a fault of the grader\'s (grade them again with --only): %s'
+            % ' '.join(ungraded))
+        return EXIT_NOT_ALL_GRADED
     return EXIT_OK
 
 

@@ -182,6 +182,18 @@ def refused_result(run, reason, workers=()):
     return _rewrite(run, result)
 
 
+def rejected_result(run, reason):
+    """A submission that cannot be taken at all (it does not unpack, it holds
+    no package, it is not a folder or an archive): ``not_built``, decided on
+    the teacher's side without a worker."""
+    result = record.RunRecord.new(
+        run.spec.name, run.label, run.seed, verdict='not_built', reason=reason,
+        commands=[], commands_from='', readme_commands=[], truth={'sim_time': 0.0},
+        notes=list(run.spec.notes), duration=run.spec.duration, ended_by='not_run',
+        packages=list(run.spec.packages))
+    return _rewrite(run, result)
+
+
 def _rewrite(run, result):
     """The record written (through its one writer) and kept as the run's result."""
     run.result, run.state = record.write(run.record, result), 'done'

@@ -13,7 +13,7 @@ import html
 import os
 import re
 
-from exp_assignment2.grading import report_judged
+from exp_assignment2.grading import report_judged, report_packages
 from exp_assignment2.grading.report_marks import _number
 
 WORDS = {
@@ -178,6 +178,7 @@ def page(summary, run, pictures, profile, clean):
     parts += report_judged.judged_section(run, shown, 'What the grader judged')
     parts.append('<h2>How it was started</h2><pre>%s</pre>' % _e(clean(
         '\n'.join(run.get('commands') or []))))
+    parts += report_packages.packages_section(run, clean)
     pics = [(k, pictures.get(k)) for k in ('top', 'head')] + \
         list((pictures.get('frames') or {}).items())     # the moments in their order
     for title, chosen, _ in ((pictures.get('windows') or {}).get('rows') or []):

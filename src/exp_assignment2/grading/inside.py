@@ -65,7 +65,8 @@ def original_env(plan):
         sys.stderr.flush()
         os.dup2(log.fileno(), 2)        # what the build prints, and what it runs
         try:
-            env = environment(plan['package'], bin_dir=plan.get('bin_dir'))
+            env = environment(plan['package'], more=plan.get('more') or (),
+                              bin_dir=plan.get('bin_dir'))
             sys.stderr.write('[original-env] enabled: %s\n' % env['EXP2_ORIGINAL_ENV'])
             return env, None
         except (NoWorkspace, BuildFailed) as exc:

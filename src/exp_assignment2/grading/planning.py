@@ -18,14 +18,14 @@ import os
 import shutil
 import tempfile
 
-from exp_assignment2.grading import launch_nodes, profiles
+from exp_assignment2.grading import assignment, build_deps, launch_nodes, profiles
+from exp_assignment2.grading import packages as packages_
 from exp_assignment2.grading.choose import Context, choose, own_has
 from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, \
     readme_entries
 from exp_assignment2.grading.paths import REPO
 from exp_assignment2.grading.spec import RunSpec, settings
-from exp_assignment2.grading.submissions import SubmissionError, discover, package_name, \
-    unpack
+from exp_assignment2.grading.submissions import SubmissionError, discover, unpack
 
 OWN_NAME, SIM_PACKAGE = 'exp_assignment2', 'exp_assignment2_sim'   # see overlay/build.py
 
@@ -35,14 +35,23 @@ def sim_name(package):
     return SIM_PACKAGE if package == OWN_NAME else OWN_NAME
 
 
-def _put_in(command, package):
-    return command.replace('{package}', package).replace('{sim}', sim_name(package))
+def _put_in(command, package, sim=None):
+    return command.replace('{package}', package).replace('{sim}', sim or sim_name(package))
 
 
-def resolve(package_dir, package, name, teacher, profile, provided, read_launches):
+def resolve(package_dir, package, name, teacher, profile, provided, read_launches, root=None,
+            packages=None, other_parts=None):
     """{'commands', 'commands_from', 'readme_commands', 'notes'} for one
     submission (see the module's docstring). ``read_launches(requests,
-    packages)``: the launch files' nodes (launch_nodes.read, or a test's)."""
+    packages)``: the launch files' nodes (launch_nodes.read, or a test's).
+    ``root``: the submission's folder (its README is read there first, then
+    in ``package_dir``); ``packages``: {name: folder} of all its packages;
+    ``other_parts(entries, readme_text)``: {command: why} of the README's
+    commands about another assignment (assignment.other_sections)."""
+    root = root or package_dir
+    own_packages = dict(packages or {package: package_dir})
+    # this package's name beside the student's: exp_assignment2_sim if theirs is called so
+    sim = SIM_PACKAGE if OWN_NAME in own_packages else OWN_NAME
     own = (teacher.get('submissions') or {}).get(name) or {}
     listed, notes = [], []
     if own.get('commands'):
@@ -50,9 +59,16 @@ def resolve(package_dir, package, name, teacher, profile, provided, read_launche
     elif teacher.get('commands'):
         commands, source = teacher['commands'], 'grading.yaml (commands)'
     else:
-        entries, readme = readme_entries(package_dir)
+        entries, readme, where = readme_entries(root) + (root,)
+        if readme is None and root != package_dir:
+            entries, readme, where = readme_entries(package_dir) + (package_dir,)
+        others = other_parts(entries, _text(os.path.join(where, readme))) \
+            if other_parts and readme else {}
+        skipped = [e for e in entries if e['command'] in others]
+        entries = [e for e in entries if e['command'] not in others]
         ctx = Context(package, package_dir, provided, world=bool(profile['world_commands']))
-        packages = {package: package_dir, sim_name(package): REPO}
+        packages = dict(own_packages)
+        packages[sim] = REPO
         for entry in entries:       # $(find NAME) for the name the README gives it too
             words = entry['command'].split()
             if entry['kind'] == 'ros' and len(words) > 2 and words[1] not in provided \
@@ -60,6 +76,8 @@ def resolve(package_dir, package, name, teacher, profile, provided, read_launche
                 packages.setdefault(words[1], package_dir)
         commands, listed = choose(entries, ctx, lambda requests: read_launches(
             requests, packages))
+        listed += [{'command': e['command'], 'ran': False, 'why': others[e['command']]}
+                   for e in skipped]
         for item in listed:         # what differs from running every line: a note each
             if item['why'] and not item['why'].startswith('a start script: its'):
                 notes.append('`%s`: %s' % (item['command'], item['why']))
@@ -68,31 +86,78 @@ def resolve(package_dir, package, name, teacher, profile, provided, read_launche
             notes.append('no roslaunch or rosrun line to run in %s: the profile\'s default'
                          % (readme or 'a README (there is none)'))
             commands, source = profile['default_commands'], "the profile's default"
-    world = [_put_in(c, package) for c in profile['world_commands']]
-    return {'commands': world + [_put_in(c, package) for c in commands],
+    world = [_put_in(c, package, sim) for c in profile['world_commands']]
+    return {'commands': world + [_put_in(c, package, sim) for c in commands],
             'commands_from': source + (" after the profile's world" if world else ''),
             'readme_commands': listed, 'notes': notes}
 
 
-def commands_for(submission, teacher, profile, provided, hidden):
-    """``resolve`` for a submission of the folder, read from a scratch copy;
-    one that does not unpack gets no commands (its run says why)."""
+def _text(path):
+    try:
+        with open(path, errors='replace') as f:
+            return f.read(1 << 20)
+    except OSError:
+        return ''
+
+
+def _readme_packages(package_dir, names):
+    """The submission's packages the README's commands name, in order."""
+    named = []
+    for entry in readme_entries(package_dir)[0]:
+        words = entry['command'].split()
+        if entry['kind'] == 'ros' and len(words) > 2 and words[1] in names:
+            named.append(words[1])
+    return named
+
+
+def read_submission(submission, scratch, teacher, profile, provided, hidden, known=None):
+    """What the teacher's side knows of one submission before it runs,
+    read from a copy in ``scratch``: its packages, which of them the run
+    builds and why, its commands (:func:`resolve`), and what it needs from
+    Debian. A submission that cannot be taken gets ``rejected`` (its
+    verdict is ``not_built``, with that reason)."""
+    empty = {'package': None, 'commands': [], 'commands_from': '', 'readme_commands': [],
+             'notes': [], 'packages': [], 'build': [], 'debian': [], 'rejected': None}
+    try:
+        unpacked = unpack(submission, os.path.join(scratch, 'src'))
+    except SubmissionError as exc:
+        return dict(empty, rejected='the submission: %s' % exc)
+    found = packages_.find(unpacked.root)
+    if not found:
+        return dict(empty, notes=unpacked.notes,
+                    rejected='the submission: no package.xml in it (a catkin package has one)')
+    names = {p.name for p in found}
+    root = unpacked.root
+    main = assignment.main_package(found, profile, _readme_packages(root, names) or
+                                   [n for p in found for n in _readme_packages(p.path, names)])
+
+    def read(requests, packages):
+        return launch_nodes.read({'launches': requests, 'packages': packages},
+                                 shown=[scratch], hidden=hidden)
+    own = {p.name: p.path for p in found}
+    result = resolve(main.path, main.name, submission.name, teacher, profile,
+                     provided | set(own), read, root=root, packages=own,
+                     other_parts=lambda entries, text: assignment.other_sections(
+                         text, entries, found, main))
+    listed, built = packages_.choose(found, main, result['commands'],
+                                     result.get('build_packages') or ())
+    needs = build_deps.resolve(built, provided | set(own),
+                               known if known is not None else build_deps.available_debian())
+    result.update(package=main.name, packages=listed, rejected=None, debian=needs['debian'],
+                  build=[p.rel for p in built],
+                  notes=unpacked.notes + result['notes'] + needs['notes'])
+    if len(found) > 1:
+        result['notes'].insert(0, '%d packages found: %s built (%s)' % (
+            len(found), ', '.join(p.name for p in built),
+            'the others: see Packages' if len(built) < len(found) else 'all of them'))
+    return result
+
+
+def commands_for(submission, teacher, profile, provided, hidden, known=None):
+    """:func:`read_submission` from a scratch copy, removed after."""
     scratch = tempfile.mkdtemp(prefix='exp2-readme-')
     try:
-        try:
-            package_dir = unpack(submission, os.path.join(scratch, 'src'))
-        except SubmissionError as exc:
-            return {'package': None, 'commands': [], 'commands_from': '',
-                    'readme_commands': [], 'notes': ['not read: %s' % exc]}
-        package = package_name(package_dir)
-
-        def read(requests, packages):
-            return launch_nodes.read({'launches': requests, 'packages': packages},
-                                     shown=[scratch], hidden=hidden)
-        found = resolve(package_dir, package, submission.name, teacher, profile, provided,
-                        read)
-        found['package'] = package
-        return found
+        return read_submission(submission, scratch, teacher, profile, provided, hidden, known)
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
 
@@ -137,13 +202,21 @@ def plan(args, out, version, log):
         submissions = [s for s in submissions if s.name in args.only]
     hidden = [folder if os.path.isdir(folder) else os.path.dirname(folder), out]
     provided = launch_nodes.provided_packages()
+    known = build_deps.available_debian()
     specs = []
     for submission in submissions:
         own = (teacher.get('submissions') or {}).get(submission.name) or {}
         if own.get('skip'):
             log('%s: skipped (grading.yaml)' % submission.name)
             continue
-        found = commands_for(submission, teacher, profile, provided, hidden)
+        refused = (teacher.get('errors') or {}).get(submission.name)
+        try:
+            found = commands_for(submission, teacher, profile, provided, hidden, known)
+        except Exception as exc:      # noqa: BLE001 -- the grader's fault, for this one only
+            log('%s: the grader failed while reading it: %s' % (submission.name,
+                                                                 traceback_line(exc)))
+            found, refused = {}, refused or 'the grader failed while reading the submission ' \
+                '(a fault of the grader\'s, not the student\'s): %s' % traceback_line(exc)
         mine = profiles.with_teacher_roles(profile, own.get('roles'))
         for r in range(args.repeat):
             specs.append(RunSpec(
@@ -152,5 +225,18 @@ def plan(args, out, version, log):
                                                                              r + 1),
                 seed=args.seed + r, profile=mine, duration=chosen['duration'],
                 real_time_factor=chosen['real_time_factor'], hidden=hidden, version=version,
-                refused=(teacher.get('errors') or {}).get(submission.name), **found))
+                refused=refused, **found))
+    # what the class needs from Debian, installed once, before any run (a run's
+    # sandbox never installs; a worker installs what it lacks before its run)
+    build_deps.install(sorted({n for spec in specs if not spec.refused for n in spec.debian}),
+                       log)
     return specs, profile, whence
+
+
+def traceback_line(exc):
+    """``TypeError: ... (planning.py:42)``: the exception and where it was raised."""
+    import traceback
+    frames = traceback.extract_tb(exc.__traceback__)
+    where = ' (%s:%d)' % (os.path.basename(frames[-1].filename), frames[-1].lineno) \
+        if frames else ''
+    return '%s: %s%s' % (type(exc).__name__, str(exc)[:300], where)

@@ -19,12 +19,15 @@ from exp_assignment2.grading.scores import check_spec
 REQUIRED = ('name', 'duration', 'default_commands', 'robot', 'checks')
 KEYS = {'name', 'title', 'duration', 'default_commands', 'world_commands', 'delay', 'cpu_per_run',
         'memory_limit_mb', 'process_limit', 'robot', 'ball', 'ball_radius', 'camera',
-        'record_topics', 'checks'}
+        'record_topics', 'checks', 'assignment'}
 CHECK_KEYS = {'name', 'metric', 'min', 'max', 'reach', 'joint', 'topic', 'tolerance',
               'points', 'zero', 'visibility'}      # the last three: the rubric (grading.scores)
 DEFAULTS = {'title': '', 'world_commands': [], 'delay': 5, 'cpu_per_run': 1.0,
             'memory_limit_mb': 3000, 'process_limit': 512, 'ball': None, 'ball_radius': None,
-            'camera': None, 'record_topics': []}
+            'camera': None, 'record_topics': [],
+            # the names the assignment's package, or the folder holding it, goes by: in a
+            # repository of the whole course, the package a run is about (assignment.py)
+            'assignment': []}
 
 
 class ProfileError(Exception):
@@ -78,6 +81,9 @@ def check(data, where='profile'):
     if not (isinstance(profile['default_commands'], list) and profile['default_commands']
             and all(isinstance(c, str) for c in profile['default_commands'])):
         raise ProfileError('%s: default_commands: a list of command lines' % where)
+    if not (isinstance(profile['assignment'], list)
+            and all(isinstance(n, str) and n for n in profile['assignment'])):
+        raise ProfileError('%s: assignment: a list of names (the package, its folder)' % where)
     if not (isinstance(profile['world_commands'], list)
             and all(isinstance(c, str) for c in profile['world_commands'])):
         raise ProfileError('%s: world_commands: a list of command lines' % where)

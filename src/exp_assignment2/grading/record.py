@@ -9,7 +9,8 @@ A record is a dict (it travels back from a Dask worker as one) with these
 keys, those of a run that did not run left out:
 
 * who: ``name``, ``label``, ``seed``, ``version``, ``profile``, ``workers``;
-* what was asked: ``commands``, ``commands_from``, ``notes``, ``duration``
+* what was asked: ``commands``, ``commands_from``, ``notes``, ``packages`` (every
+  package of the submission: ``name``, ``rel``, ``built``, ``why``), ``duration``
   (the run's own simulated s), ``real_time_factor_asked``,
   ``repeat_command``, ``limits``;
 * how it went: ``started``, ``finished``, ``events`` (the driver's), ``build``

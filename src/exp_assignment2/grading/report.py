@@ -16,7 +16,7 @@ import shutil
 import statistics
 
 from exp_assignment2.grading import feedback, figures, gradescope, metrics, record, \
-    report_failures, report_judged, report_marks
+    report_failures, report_judged, report_marks, report_packages
 from exp_assignment2.grading import roles as roles_
 from exp_assignment2.grading.logs import read_log
 from exp_assignment2.grading.report_camera import camera_section, window_pictures
@@ -154,6 +154,7 @@ def _page(summary, runs, runs_dir, pictures, profile):
         _e(main.get('commands_from')), _e('\n'.join(main.get('commands') or []))))
     for note in main.get('notes') or []:
         parts.append('<p>note: %s</p>' % _e(note))
+    parts += report_packages.packages_section(main)
     if main.get('readme_commands'):     # every README command: ran, or left out and why
         parts.append('<h3>The README\'s commands</h3><table><tr><th>command</th><th></th>'
                      '<th>why</th></tr>' + ''.join(

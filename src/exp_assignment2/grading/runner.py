@@ -13,7 +13,8 @@ import subprocess
 import threading
 import time
 
-from exp_assignment2.grading import cpu, logs, record, verdicts
+from exp_assignment2.grading import build_deps, cpu, logs, record, verdicts
+from exp_assignment2.grading import packages as packages_
 from exp_assignment2.grading.paths import INSIDE, REPO
 from exp_assignment2.grading.run_files import directory_size, log_sizes, waits_on_wall_clock
 from exp_assignment2.grading.sandbox import Sandbox, SandboxError
@@ -71,8 +72,9 @@ class Run(object):
             os.makedirs(path, exist_ok=True)
         os.chmod(self.sockets, 0o755)
 
-    def _plan(self, package_dir):
-        plan = {'package': package_dir, 'commands': self.spec.commands,
+    def _plan(self, package_dir, more=(), root=None):
+        plan = {'package': package_dir, 'more': list(more), 'root': root or package_dir,
+                'commands': self.spec.commands,
                 'delay': float(self.settings.profile['delay']),
                 'logs': os.path.join(self.work, 'logs')}
         path = os.path.join(self.work, 'plan.json')
@@ -89,6 +91,8 @@ class Run(object):
             'ROS_MASTER_URI': 'http://localhost:11311', 'ROS_HOSTNAME': 'localhost',
             'TMPDIR': '/tmp', 'EXP2_WS': ws, 'EXP2_OVERLAY_ROOT': os.path.join(self.work, 'overlay'),
             'CCACHE_DISABLE': '1', 'PYTHONHASHSEED': str(self.seed), 'EXP2_SEED': str(self.seed),
+            # nothing is installed in a sandbox (no network, no root): the grader did it before
+            'EXP2_NO_INSTALL': '1',
             'PYTHONUNBUFFERED': '1', 'PYTHONDONTWRITEBYTECODE': '1',
             SOCKET_ENV: os.path.join(self.sockets, 'truth.sock'),
             TOPICS_ENV: ','.join(profile.get('record_topics') or []),
@@ -111,19 +115,55 @@ class Run(object):
                        processes=profile['process_limit'], env=env)
 
     def go(self):
+        """The run, start to record; whatever goes wrong in the grader on the
+        way is this run's ``grader_error`` with its cause, never the grading's end."""
         started = time.time()
-        self._fresh_dirs()
         spec = self.spec
         result = {'name': self.submission.name, 'label': self.label, 'seed': self.seed,
                   'version': self.settings.version, 'profile': self.settings.profile['name'],
                   'started': started, 'commands': list(spec.commands),
                   'commands_from': spec.commands_from, 'notes': list(spec.notes),
-                  'readme_commands': list(spec.readme_commands)}
+                  'readme_commands': list(spec.readme_commands),
+                  'packages': list(spec.packages)}
         try:
-            package_dir = unpack(self.submission, os.path.join(self.work, 'src'))
+            self._fresh_dirs()
+            self._go(result)
+        except Exception as exc:      # noqa: BLE001 -- a fault of the grader's, this run's only
+            from exp_assignment2.grading.planning import traceback_line
+            result.update(verdict='grader_error', reason='the grader failed while running it '
+                          '(a fault of the grader\'s, not the student\'s): %s'
+                          % traceback_line(exc))
+        return self._finish(result)
+
+    def _packages(self, root):
+        """(the main package's folder, the other built ones') under ``root``,
+        as planned (else found here: a spec made by hand)."""
+        if self.spec.build:
+            dirs = [os.path.normpath(os.path.join(root, rel)) for rel in self.spec.build]
+            if all(os.path.isfile(os.path.join(d, 'package.xml')) for d in dirs):
+                return dirs[0], dirs[1:]
+        found = packages_.find(root)
+        if not found:
+            raise SubmissionError('no package.xml in it (a catkin package has one)')
+        main = packages_.main_package(found)
+        listed, built = packages_.choose(found, main, self.spec.commands)
+        return built[0].path, [p.path for p in built[1:]]
+
+    def _go(self, result):
+        spec = self.spec
+        if spec.rejected:
+            result.update(verdict='not_built', reason=spec.rejected)
+            return
+        failed = build_deps.install(spec.debian, self.settings.log)
+        if failed:
+            result['notes'].append('what the build needs from Debian could not be installed '
+                                   'on this machine: %s' % failed)
+        try:
+            unpacked = unpack(self.submission, os.path.join(self.work, 'src'))
+            package_dir, more = self._packages(unpacked.root)
         except SubmissionError as exc:
             result.update(verdict='not_built', reason='the submission: %s' % exc)
-            return self._finish(result)
+            return
         result['package'] = package_name(package_dir)
         rtf = self.settings.real_time_factor
         if rtf != 1.0:
@@ -141,10 +181,9 @@ class Run(object):
                 self.settings.profile['memory_limit_mb'], self.settings.profile['process_limit'])]
             truth = TruthServer(os.path.join(self.sockets, 'truth.sock'), self.record,
                                 may_write=box.may_write)
-            self._monitor(box, truth, self._plan(package_dir), rtf, result)
+            self._monitor(box, truth, self._plan(package_dir, more, unpacked.root), rtf, result)
         except SandboxError as exc:
             result.update(verdict='grader_error', reason=str(exc))
-        return self._finish(result)
 
     def repeat_command(self):
         return 'bash tools/run grade %s --profile %s --seed %d --duration %g%s' % (
@@ -262,7 +301,17 @@ class Run(object):
         result.setdefault('duration', self.settings.duration)
         result.setdefault('ended_by', 'not_run')      # not unpacked, or no sandbox
         if 'verdict' not in result:
-            result.update(verdicts.judge(self.work, self.record, result, self.settings.profile))
+            try:
+                result.update(verdicts.judge(self.work, self.record, result,
+                                             self.settings.profile))
+            except Exception as exc:      # noqa: BLE001 -- the grader's fault, this run's only
+                from exp_assignment2.grading.planning import traceback_line
+                result.update(verdict='grader_error', reason='the grader failed while judging '
+                              'it (a fault of the grader\'s, not the student\'s): %s'
+                              % traceback_line(exc))
+        if result.get('verdict') == 'not_built':
+            result['reason'] = build_deps.said_by_rosdep(result.get('reason') or '',
+                                                         result.get('notes') or [])
         result['finished'] = time.time()
         self.result = record.write(self.record, result)
         self.state = 'done'

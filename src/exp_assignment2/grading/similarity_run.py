@@ -34,8 +34,8 @@ def _read(name, path, kind, scratch):
     """A similarity.Submission from a folder or archive (copied or unpacked first)."""
     dest = os.path.join(scratch, name)
     try:
-        root = unpack(Submission(name, path, kind), dest)
-    except SubmissionError:     # no package.xml: its files are still code to compare
+        root = unpack(Submission(name, path, kind), dest).root
+    except SubmissionError:     # it does not unpack: nothing of it to compare
         root = dest
     return similarity.Submission.read(name, root)
 
@@ -49,7 +49,7 @@ def run(folder, out, templates, base_share=0.1, only=None, log=print):
     submissions, _ = discover(folder)
     skip = set(templates)
     submissions = [s for s in submissions if os.path.abspath(s.path) not in skip
-                   and (not only or s.name in only)]
+                   and s.kind != 'other' and (not only or s.name in only)]
     scratch = tempfile.mkdtemp(prefix='exp2-similar-')
     try:
         read = [_read(s.name, s.path, s.kind, scratch) for s in submissions]

@@ -9,7 +9,7 @@ key (:func:`settings`).
 
 FIELDS = ('name', 'path', 'kind', 'label', 'seed', 'profile', 'duration',
           'real_time_factor', 'hidden', 'version', 'package', 'commands', 'commands_from',
-          'readme_commands', 'notes', 'refused')
+          'readme_commands', 'notes', 'refused', 'packages', 'build', 'debian', 'rejected')
 
 
 class RunSpec(object):
@@ -17,7 +17,14 @@ class RunSpec(object):
     starts (the profile's world first, ``{package}``/``{sim}`` put in);
     ``readme_commands``: every command the README gives, each
     ``{'command', 'ran', 'why'}``; ``refused``: why the run must not run
-    (a mistake in the teacher's settings for it), or None."""
+    (a mistake in the teacher's settings for it, or the grader's own
+    failure to read it: ``grader_error``), or None; ``rejected``: why the
+    submission cannot be taken at all (``not_built``: it does not unpack, it
+    holds no package, it is not a folder or an archive), or None;
+    ``packages``: every package found, each ``{'name', 'rel', 'built',
+    'why'}``; ``build``: the folders (relative to the submission's root) of
+    those the run builds, the main one first; ``debian``: what the build
+    needs from Debian (installed before the run, outside its sandbox)."""
 
     def __init__(self, **fields):
         unknown = set(fields) - set(FIELDS)
@@ -25,7 +32,8 @@ class RunSpec(object):
             raise TypeError('RunSpec: unknown fields %s' % ', '.join(sorted(unknown)))
         defaults = {'seed': 1, 'hidden': [], 'version': '', 'package': None, 'commands': [],
                     'commands_from': '', 'readme_commands': [], 'notes': [], 'refused': None,
-                    'real_time_factor': 1.0, 'label': None}
+                    'real_time_factor': 1.0, 'label': None, 'packages': [], 'build': [],
+                    'debian': [], 'rejected': None}
         for key in FIELDS:
             value = fields.get(key, defaults.get(key))
             setattr(self, key, list(value) if isinstance(value, (list, tuple)) else value)

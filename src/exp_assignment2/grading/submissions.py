@@ -1,36 +1,34 @@
 """A teacher's folder of submissions, read safely (no ROS).
 
-A submission is a directory, a ``.zip`` or a ``.tar.gz``/``.tgz`` holding
-one catkin package at its top or one level down (as students hand them in).
-A folder that is itself a package is one submission (a student checking
-their own work). The folder is only ever read: archives are unpacked into the
-run's own directory, refusing what would escape it (``../``, absolute paths,
-links pointing out, devices) and what unpacks to more than a set size.
+Every entry of the folder is one submission, whatever it is: a directory, a
+``.zip`` or a tar archive (``.tar.gz``, ``.tgz``, ``.tar``, ``.tar.bz2``,
+``.tar.xz``) holding what the student handed in (one package, several, a
+whole catkin workspace, a repository of the course), and anything else (a
+loose file, a fifo, a link, another kind of archive) gets a row and a
+verdict saying why it could not be taken: one entry never costs the teacher
+the others. A folder that is itself a package is one submission (a student
+checking their own work). The folder is only ever read: what is in an entry
+is put in the run's own directory by :mod:`.unpacking`; which packages it
+holds, and which of them a run builds, is :mod:`.packages`' to say.
 """
 import os
 import re
-import shutil
-import stat
-import tarfile
-import zipfile
 
-ARCHIVE_SUFFIXES = ('.zip', '.tar.gz', '.tgz')
-MAX_UNPACKED = 200 * 1024 * 1024     # bytes: a submission bigger than this is refused
-MAX_MEMBERS = 20000
-SKIPPED = {'.git', '__MACOSX', '.svn', '.hg', 'build', 'devel', 'install'}
+from exp_assignment2.grading.unpacking import MAX_UNPACKED, SKIPPED, SubmissionError, \
+    Unpacked, copy_dir, unpack  # noqa: F401 (the grader's one door to them)
+
+ARCHIVE_SUFFIXES = ('.zip', '.tar.gz', '.tgz', '.tar', '.tar.bz2', '.tbz2', '.tar.xz', '.txz')
+OTHER_ARCHIVES = ('.rar', '.7z', '.gz', '.bz2', '.xz', '.zst')
 TEACHER_FILES = {'grading.yaml', 'grading.yml'}
-
-
-class SubmissionError(Exception):
-    """One line saying what is wrong with one submission."""
 
 
 class Submission(object):
     """One entry of the folder: ``name`` (file name less the archive suffix),
-    ``path`` (where it is), ``kind`` (``dir``, ``zip``, ``tar``)."""
+    ``path`` (where it is), ``kind`` (``dir``, ``zip``, ``tar``, or ``other``:
+    ``why`` says what it is and why it cannot be graded)."""
 
-    def __init__(self, name, path, kind):
-        self.name, self.path, self.kind = name, path, kind
+    def __init__(self, name, path, kind, why=None):
+        self.name, self.path, self.kind, self.why = name, path, kind, why
 
     def __repr__(self):
         return 'Submission(%r, %r)' % (self.name, self.kind)
@@ -52,25 +50,46 @@ def _kind(path):
         return 'dir'
     if lower.endswith('.zip'):
         return 'zip'
-    if lower.endswith('.tar.gz') or lower.endswith('.tgz'):
+    if any(lower.endswith(s) for s in ARCHIVE_SUFFIXES):
         return 'tar'
     return None
 
 
 def _strip_suffix(name):
     lower = name.lower()
-    for suffix in ARCHIVE_SUFFIXES:
+    for suffix in ARCHIVE_SUFFIXES + OTHER_ARCHIVES:
         if lower.endswith(suffix):
             return name[:-len(suffix)]
     return name
 
 
+def what_it_is(path):
+    """Why an entry that is not a folder or an archive cannot be graded (one line)."""
+    import stat
+    try:
+        st = os.lstat(path)
+    except OSError as exc:
+        return 'cannot be read (%s)' % exc.strerror
+    if stat.S_ISLNK(st.st_mode):
+        return 'a link (-> %s), not followed: put the submission itself in the folder' \
+            % os.readlink(path)
+    if stat.S_ISFIFO(st.st_mode) or stat.S_ISSOCK(st.st_mode) or stat.S_ISCHR(st.st_mode) \
+            or stat.S_ISBLK(st.st_mode):
+        return 'not a file nor a folder (a fifo, a socket or a device)'
+    if path.lower().endswith(OTHER_ARCHIVES):
+        return 'an archive the grader does not read (a folder, .zip or .tar.gz it does)'
+    if not os.access(path, os.R_OK):
+        return 'cannot be read (permission denied)'
+    return 'a single file, not a submission (a folder, .zip or .tar.gz of the package)'
+
+
 def discover(folder):
-    """(submissions, notes): the folder's submissions, and one line for each
-    entry that is not one (SubmissionError for a folder that is neither)."""
+    """(submissions, notes): one Submission per entry of the folder, those
+    that cannot be graded with their ``why`` (SubmissionError for a folder
+    that is neither a folder of submissions nor one)."""
     folder = os.path.abspath(folder)
     if not os.path.isdir(folder):
-        if _kind(folder) in ('zip', 'tar'):
+        if os.path.exists(folder) and _kind(folder) in ('zip', 'tar'):
             return [Submission(_strip_suffix(os.path.basename(folder)), folder,
                                _kind(folder))], []
         raise SubmissionError('%s: no such folder' % folder)
@@ -82,169 +101,20 @@ def discover(folder):
         if entry.startswith('.') or entry in TEACHER_FILES:
             continue
         kind = _kind(path) if not os.path.islink(path) else None
-        if kind is None:
-            notes.append('%s: not a submission (a folder, .zip, .tar.gz or .tgz): skipped'
-                         % entry)
-            continue
         name = safe_name(_strip_suffix(entry))
         while name in names:
             name += '_'
         names.add(name)
-        submissions.append(Submission(name, path, kind))
+        if kind is None:
+            why = what_it_is(path)
+            notes.append('%s: %s: graded as not built' % (entry, why))
+            submissions.append(Submission(name, path, 'other', why))
+        else:
+            submissions.append(Submission(name, path, kind))
     if not submissions:
         raise SubmissionError('%s: no submissions in it (folders, .zip, .tar.gz or .tgz)'
                               % folder)
     return submissions, notes
-
-
-def _inside(root, member_name):
-    """The member's path under root; SubmissionError if it would leave it."""
-    if member_name.startswith('/') or re.match(r'^[A-Za-z]:', member_name) or \
-            '\\' in member_name and '..' in member_name:
-        raise SubmissionError('the archive holds an absolute path: %s' % member_name)
-    target = os.path.normpath(os.path.join(root, member_name))
-    if target != root and not target.startswith(root + os.sep):
-        raise SubmissionError('the archive holds a path out of it: %s' % member_name)
-    return target
-
-
-def _unpack_zip(path, dest, limit):
-    with zipfile.ZipFile(path) as archive:
-        members = archive.infolist()
-        if len(members) > MAX_MEMBERS:
-            raise SubmissionError('the archive holds %d files (at most %d)'
-                                  % (len(members), MAX_MEMBERS))
-        total = 0
-        for info in members:
-            target = _inside(dest, info.filename)
-            mode = (info.external_attr >> 16) & 0o177777
-            if stat.S_ISLNK(mode):
-                raise SubmissionError('the archive holds a symbolic link: %s' % info.filename)
-            total += info.file_size
-            if total > limit:
-                raise SubmissionError('the archive unpacks to more than %d MB'
-                                      % (limit // 2 ** 20))
-            if info.is_dir():
-                os.makedirs(target, exist_ok=True)
-                continue
-            os.makedirs(os.path.dirname(target), exist_ok=True)
-            written = 0
-            with archive.open(info) as src, open(target, 'wb') as out:
-                while True:      # counted as read: a zip's declared sizes can lie
-                    chunk = src.read(1 << 20)
-                    if not chunk:
-                        break
-                    written += len(chunk)
-                    if total - info.file_size + written > limit:
-                        raise SubmissionError('the archive unpacks to more than %d MB'
-                                              % (limit // 2 ** 20))
-                    out.write(chunk)
-            if mode & 0o111:
-                os.chmod(target, 0o755)
-
-
-def _unpack_tar(path, dest, limit):
-    with tarfile.open(path, 'r:*') as archive:
-        total, count = 0, 0
-        for member in archive:
-            count += 1
-            if count > MAX_MEMBERS:
-                raise SubmissionError('the archive holds more than %d files' % MAX_MEMBERS)
-            target = _inside(dest, member.name)
-            if member.issym() or member.islnk():
-                link = member.linkname
-                base = os.path.dirname(target) if member.issym() else dest
-                resolved = os.path.normpath(os.path.join(base, link))
-                if os.path.isabs(link) or not (resolved == dest or
-                                               resolved.startswith(dest + os.sep)):
-                    raise SubmissionError('the archive holds a link out of it: %s -> %s'
-                                          % (member.name, link))
-                raise SubmissionError('the archive holds a link: %s -> %s: hand in the file'
-                                      % (member.name, link))
-            if member.isdir():
-                os.makedirs(target, exist_ok=True)
-                continue
-            if not member.isfile():
-                raise SubmissionError('the archive holds a special file: %s' % member.name)
-            total += member.size
-            if total > limit:
-                raise SubmissionError('the archive unpacks to more than %d MB'
-                                      % (limit // 2 ** 20))
-            os.makedirs(os.path.dirname(target), exist_ok=True)
-            src = archive.extractfile(member)
-            with src, open(target, 'wb') as out:
-                shutil.copyfileobj(src, out)
-            os.chmod(target, 0o755 if member.mode & 0o111 else 0o644)
-
-
-def copy_dir(path, dest, limit):
-    """A directory submission copied (links out of it refused, size bounded)."""
-    root = os.path.realpath(path)
-    total = 0
-    for dirpath, dirnames, filenames in os.walk(root):
-        dirnames[:] = [d for d in dirnames if d not in SKIPPED]
-        rel = os.path.relpath(dirpath, root)
-        os.makedirs(os.path.join(dest, rel), exist_ok=True)
-        for name in dirnames + filenames:
-            full = os.path.join(dirpath, name)
-            if os.path.islink(full):
-                real = os.path.realpath(full)
-                if not (real == root or real.startswith(root + os.sep)):
-                    raise SubmissionError('%s: a link out of the submission (-> %s)'
-                                          % (os.path.join(rel, name), os.readlink(full)))
-        for name in filenames:
-            full = os.path.join(dirpath, name)
-            if not os.path.isfile(full):
-                continue
-            total += os.path.getsize(full)
-            if total > limit:
-                raise SubmissionError('the submission is larger than %d MB'
-                                      % (limit // 2 ** 20))
-            shutil.copy2(full, os.path.join(dest, rel, name), follow_symlinks=True)
-
-
-def unpack(submission, dest, limit=MAX_UNPACKED):
-    """Put the submission's files in ``dest`` (created); SubmissionError saying
-    why it cannot be (nothing is written outside ``dest``)."""
-    dest = os.path.abspath(dest)
-    os.makedirs(dest, exist_ok=True)
-    try:
-        if submission.kind == 'dir':
-            copy_dir(submission.path, dest, limit)
-        elif submission.kind == 'zip':
-            _unpack_zip(submission.path, dest, limit)
-        else:
-            _unpack_tar(submission.path, dest, limit)
-    except (zipfile.BadZipFile, tarfile.TarError, EOFError, OSError) as exc:
-        raise SubmissionError('the archive does not unpack: %s' % (exc,))
-    return find_package(dest)
-
-
-def find_package(root):
-    """The one catkin package's directory in ``root`` (at the top or one level
-    down, past folders that hold just one folder); SubmissionError for none or two."""
-    here = root
-    for _ in range(3):        # a zip of a folder of a folder: look through single folders
-        if is_package(here):
-            return here
-        entries = [e for e in os.listdir(here) if e not in SKIPPED and not e.startswith('.')]
-        dirs = [e for e in entries if os.path.isdir(os.path.join(here, e))]
-        packages = [d for d in dirs if is_package(os.path.join(here, d))]
-        if len(packages) > 1:
-            raise SubmissionError('two packages in one submission: %s'
-                                  % ', '.join(sorted(packages)))
-        if packages:
-            return os.path.join(here, packages[0])
-        if len(dirs) == 1 and len(entries) == 1:
-            here = os.path.join(here, dirs[0])
-            continue
-        break
-    for dirpath, dirnames, filenames in os.walk(root):   # deeper: name them, refuse
-        dirnames[:] = [d for d in dirnames if d not in SKIPPED]
-        if 'package.xml' in filenames:
-            raise SubmissionError('no package.xml at the top or one level down (one is at %s)'
-                                  % os.path.relpath(dirpath, root))
-    raise SubmissionError('no package.xml in it: a submission is one catkin package')
 
 
 def package_name(package_dir):

@@ -23,6 +23,9 @@ TEMPLATE_BUILD = (
 LOCK = os.path.join(os.environ.get('TMPDIR') or '/tmp', 'exp_assignment2-install.lock')
 
 
+NO_INSTALL_ENV = 'EXP2_NO_INSTALL'
+
+
 class InstallFailed(Exception):
     """apt-get could not install what the build needs."""
 
@@ -38,8 +41,15 @@ def missing(packages):
 
 def install(packages):
     """Install those of ``packages`` that are missing (as root, else through sudo),
-    holding the install lock."""
+    holding the install lock. Where installing is not this process's to do
+    (``EXP2_NO_INSTALL=1``: a grader's sandbox, which has no network and no
+    root; the grader installs before the run), what is missing is said once
+    and the build goes on without it."""
     if not missing(packages):
+        return
+    if os.environ.get(NO_INSTALL_ENV) == '1':
+        print('[original-env] not installed here (%s=1): %s' % (
+            NO_INSTALL_ENV, ' '.join(missing(packages))), file=sys.stderr, flush=True)
         return
     with open(LOCK, 'a') as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
