@@ -242,7 +242,9 @@ def test_the_plan_reads_an_archive_on_the_teachers_side(tmp_path, monkeypatch):
     submission's settings is carried in its spec, not patched onto a run."""
     import argparse
     import zipfile
-    from exp_assignment2.grading import planning
+    from exp_assignment2.grading import build_deps, planning
+    monkeypatch.setattr(build_deps, 'available_debian', lambda: set())
+    monkeypatch.setattr(build_deps, 'install', lambda names, log: None)
     monkeypatch.setattr(launch_nodes, 'provided_packages', lambda: {'gazebo_ros'})
     monkeypatch.setattr(launch_nodes, 'read', lambda request, **kw: {
         r['key']: {'nodes': ['/gazebo']} for r in request['launches']})
