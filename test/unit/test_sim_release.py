@@ -75,12 +75,15 @@ def test_legacy_mode_turns_the_course_robot_left_on_kinetic_only(release, direct
     assert direction * turned_by(release, course_robot()) > 0.2
 
 
-@pytest.mark.parametrize('legacy,kinetic_sign', [('', 1), ('<legacyMode>false</legacyMode>', -1),
-                                                 ('<legacyMode>1</legacyMode>', 1)])
-def test_kinetic_s_default_is_legacy_and_the_others_ignore_the_tag(legacy, kinetic_sign):
+@pytest.mark.parametrize('legacy,kinetic_sign,said', [
+    ('', 1, ('error', 'missing <legacyMode>')), ('<legacyMode>false</legacyMode>', -1, None),
+    ('<legacyMode>FALSE</legacyMode>', -1, None),
+    ('<legacyMode>0</legacyMode>', 1, ('warn', "<legacyMode> '0' is not true or false"))])
+def test_kinetic_s_default_is_legacy_and_the_others_ignore_the_tag(legacy, kinetic_sign, said):
     """Kinetic's plugin reads legacyMode with default true (gazebo_ros_diff_drive.cpp
-    2.5.x: getParameterBoolean(legacy_mode_, "legacyMode", true)); without the
-    tag it swaps too, and says so. Melodic and Noetic: the same whatever the tag."""
+    2.5.x: getParameterBoolean(legacy_mode_, "legacyMode", true), which takes
+    only true or false, any case): without the tag, or with 0, it swaps too,
+    and says so. Melodic and Noetic: the same whatever the tag."""
     text = course_robot(legacy)
     parsed = urdf.parse(text)
     assert diff_drive_turn_sign(parsed, releases.release('kinetic')) == kinetic_sign
@@ -90,9 +93,10 @@ def test_kinetic_s_default_is_legacy_and_the_others_ignore_the_tag(legacy, kinet
     try:
         assert world.drive.drive.turn_sign() == kinetic_sign
         assert world.drive.facts()['legacy_mode'] == (kinetic_sign == 1)
-        missing = [t for level, t in world.log.lines if 'missing <legacyMode>' in t]
-        assert len(missing) == (1 if not legacy else 0) and all(
-            level == 'error' for level, t in world.log.lines if 'missing <legacyMode>' in t)
+        lines = [(level, t) for level, t in world.log.lines if 'legacyMode' in t]
+        assert len(lines) == (0 if said is None else 1)
+        if said is not None:
+            assert lines[0][0] == said[0] and said[1] in lines[0][1]
     finally:
         world.close()
     if not legacy:       # the physics agrees with the sign
@@ -172,6 +176,14 @@ def test_legacy_mode_ns_moves_the_pid_gains_on_kinetic_only():
                 '/robot/gazebo_ros_control/pid_gains'
     assert releases.release('noetic').pid_gains_namespace('', None) == \
         '/gazebo_ros_control/pid_gains'
+
+
+def test_gazebo_ros_booleans_took_1_and_0_from_melodic_on():
+    kinetic, melodic = releases.release('kinetic'), releases.release('melodic')
+    assert kinetic.boolean('True', None) == (True, True)
+    assert kinetic.boolean('1', False) == (False, False)
+    assert melodic.boolean('1', False) == (True, True)
+    assert melodic.boolean(None, 'absent') == ('absent', True)
 
 
 def test_the_parameter_wins_over_the_environment_and_noetic_is_the_default():

@@ -93,8 +93,7 @@ def diff_drive_turn_sign(urdf, release=None):
         if joint not in urdf.joints:
             raise ValueError('the diff drive names joint %r, which the URDF lacks' % joint)
     release = release or releases.choose()
-    legacy = plugin.options.get('legacyMode')
-    legacy = None if legacy in (None, '') else str(legacy).strip().lower() in ('1', 'true')
+    legacy, _ = release.boolean(plugin.options.get('legacyMode'), None)
     sign = turn_sign(urdf, left, right)
     return -sign if release.swaps_wheels(legacy) else sign
 

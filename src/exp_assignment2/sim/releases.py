@@ -9,8 +9,8 @@ that changed between those releases and that a student's node can see
 release of each is the one simulated):
 
 * the diff drive's ``legacyMode`` (#707, Melodic 2.8.3 "End of legacy for
-  diff drive plugin"): Kinetic honours it, true when the tag is absent (with
-  an error line), and swaps the wheels: the ``leftJoint`` turns at
+  diff drive plugin"): Kinetic honours it, true when the tag is absent or
+  not ``true``/``false`` (with an error or warning line), and swaps the wheels: the ``leftJoint`` turns at
   (v + w s/2) / r, the ``rightJoint`` at (v - w s/2) / r, and its encoder
   odometry turns by (left - right) / s to match; Melodic and Noetic do not
   read the tag;
@@ -40,9 +40,11 @@ class ReleaseError(ValueError):
 
 
 class Release(namedtuple('Release', 'name gazebo gazebo_ros_pkgs legacy_mode legacy_mode_ns '
-                                    'encoder_twist_in_child_frame prefix_frames_with_namespace')):
+                                    'encoder_twist_in_child_frame prefix_frames_with_namespace '
+                                    'booleans')):
     """One ROS release's Gazebo plugins. ``legacy_mode`` and ``legacy_mode_ns``
-    are the tag's default when it is read, None when the release ignores it."""
+    are the tag's default when it is read, None when the release ignores it;
+    ``booleans``: the words gazebo_ros' getParameterBoolean takes (2.8.4 added 1 and 0)."""
 
     @property
     def reads_legacy_mode(self):
@@ -51,6 +53,17 @@ class Release(namedtuple('Release', 'name gazebo gazebo_ros_pkgs legacy_mode leg
     @property
     def reads_legacy_mode_ns(self):
         return self.legacy_mode_ns is not None
+
+    def boolean(self, text, default):
+        """(value, understood) of a tag read as gazebo_ros' getParameterBoolean
+        reads it: absent (None or '') or not one of :attr:`booleans` (which it
+        warns about) leaves ``default``."""
+        if text is None or str(text).strip() == '':
+            return default, True
+        word = str(text).strip().lower()
+        if word not in self.booleans:
+            return default, False
+        return word in ('true', '1'), True
 
     def swaps_wheels(self, legacy_mode):
         """Whether the diff drive turns ``leftJoint`` at v + w s/2 (Kinetic's
@@ -82,11 +95,14 @@ class Release(namedtuple('Release', 'name gazebo gazebo_ros_pkgs legacy_mode leg
 
 RELEASES = OrderedDict((r.name, r) for r in (
     Release('kinetic', '7', '2.5', legacy_mode=True, legacy_mode_ns=True,
-            encoder_twist_in_child_frame=False, prefix_frames_with_namespace=True),
+            encoder_twist_in_child_frame=False, prefix_frames_with_namespace=True,
+            booleans=('true', 'false')),
     Release('melodic', '9', '2.8', legacy_mode=None, legacy_mode_ns=None,
-            encoder_twist_in_child_frame=True, prefix_frames_with_namespace=True),
+            encoder_twist_in_child_frame=True, prefix_frames_with_namespace=True,
+            booleans=('true', 'false', '1', '0')),
     Release('noetic', '11', '2.9', legacy_mode=None, legacy_mode_ns=None,
-            encoder_twist_in_child_frame=True, prefix_frames_with_namespace=False),
+            encoder_twist_in_child_frame=True, prefix_frames_with_namespace=False,
+            booleans=('true', 'false', '1', '0')),
 ))
 
 

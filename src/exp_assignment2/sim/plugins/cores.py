@@ -71,12 +71,15 @@ class DiffDriveCore(DriveCore):
     def load(self):
         o, release = self.options, self.engine.release
         self.command = velocity_command(self)
-        legacy = o.boolean('legacyMode', None)
-        if legacy is None and release.reads_legacy_mode:     # as Gazebo's ROS_ERROR
-            self.engine.log.error(
-                '%s: missing <legacyMode>, defaults to %s (ROS %s): the wheels are swapped, '
-                'as in an old package; set it to false for a new package'
-                % (o.where, str(release.legacy_mode).lower(), release.name))
+        text = o.raw('legacyMode')
+        legacy, understood = release.boolean(text, None)
+        if release.reads_legacy_mode and legacy is None:    # Gazebo's ROS_ERROR, ROS_WARN
+            (self.engine.log.error if understood else self.engine.log.warn)(
+                '%s: %s, defaults to %s (ROS %s): the wheels are swapped, as in an old '
+                'package; set it to false for a new package'
+                % (o.where, 'missing <legacyMode>' if understood else
+                   '<legacyMode> %r is not true or false' % text,
+                   str(release.legacy_mode).lower(), release.name))
         try:
             self.drive = DiffDrive(self.model, o.text('leftJoint', 'left_joint'),
                                    o.text('rightJoint', 'right_joint'),
