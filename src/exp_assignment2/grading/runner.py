@@ -28,7 +28,7 @@ BUILD_LIMIT = 900.0          # wall s for a build
 START_SLACK = 120.0          # wall s on top of the duration: set-up, starting, ending
 WORK_LIMIT = 2 * 1024 ** 3   # bytes the work directory may hold
 # the environment a run starts with (the sandbox's is cleared)
-PASSED_ENV = ('PATH', 'LANG', 'LC_ALL', 'EXP2_WS', 'EXP2_TEST_JOBS')
+PASSED_ENV = ('PATH', 'LANG', 'LC_ALL', 'EXP2_WS', 'EXP2_TEST_JOBS', 'EXP2_ROS_RELEASE')
 
 
 class RunSettings(object):

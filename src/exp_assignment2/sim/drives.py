@@ -11,6 +11,7 @@ import math
 
 from exp_assignment2.geometry import all_finite, cap_norm, clamp
 from exp_assignment2.grammar import show_number, show_numbers
+from exp_assignment2.sim import releases
 
 
 class VelocityCommand(object):
@@ -78,8 +79,11 @@ def turn_sign(urdf, left, right):
     return 0 if abs(rate) < 1e-9 else (1 if rate > 0 else -1)
 
 
-def diff_drive_turn_sign(urdf):
-    """:func:`turn_sign` of a parsed URDF's Gazebo diff drive; ValueError if it has none."""
+def diff_drive_turn_sign(urdf, release=None):
+    """:func:`turn_sign` of a parsed URDF's Gazebo diff drive as ``release``
+    runs it (a :class:`~exp_assignment2.sim.releases.Release`; None: the
+    environment's, :func:`~exp_assignment2.sim.releases.choose`); ValueError
+    if it has none."""
     plugin = next((p for p in urdf.gazebo.plugins if p.filename == DIFF_DRIVE_PLUGIN), None)
     if plugin is None:
         raise ValueError('no Gazebo diff-drive plugin (%s)' % DIFF_DRIVE_PLUGIN)
@@ -88,32 +92,72 @@ def diff_drive_turn_sign(urdf):
     for joint in (left, right):
         if joint not in urdf.joints:
             raise ValueError('the diff drive names joint %r, which the URDF lacks' % joint)
-    return turn_sign(urdf, left, right)
+    release = release or releases.choose()
+    legacy, _ = release.boolean(plugin.options.get('legacyMode'), None)
+    sign = turn_sign(urdf, left, right)
+    return -sign if release.swaps_wheels(legacy) else sign
 
 
 class DiffDrive(object):
-    """Gazebo's diff drive as Noetic's gazebo_ros has it: the joint named by
-    leftJoint turns at (v - w * s / 2) / r and rightJoint at (v + w * s / 2) / r
-    (s: wheelSeparation, r: wheelDiameter / 2), whatever legacyMode says
-    (Noetic no longer reads it). Which way the robot then turns is physics:
-    where those joints are and which way their axes point.
+    """Gazebo's diff drive: the joint named by leftJoint turns at
+    (v - w * s / 2) / r and rightJoint at (v + w * s / 2) / r (s:
+    wheelSeparation, r: wheelDiameter / 2), or the other way round when
+    ``swapped`` (Kinetic's legacyMode, see :mod:`.releases`). Which way the
+    robot then turns is physics: where those joints are and which way their
+    axes point.
     """
 
-    def __init__(self, model, left, right, separation, diameter, torque, command):
+    def __init__(self, model, left, right, separation, diameter, torque, command,
+                 swapped=False):
         for joint in (left, right):
             if not model.has_joint(joint):
                 raise ValueError('no joint %r in the model' % joint)
         self.model, self.joints, self.command = model, (left, right), command
         self.half, self.radius, self.torque = separation / 2.0, diameter / 2.0, torque
+        self.swapped = bool(swapped)
 
     def turn_sign(self):
-        """See :func:`turn_sign`."""
-        return turn_sign(self.model.urdf, *self.joints)
+        """See :func:`turn_sign` (the swap included)."""
+        sign = turn_sign(self.model.urdf, *self.joints)
+        return -sign if self.swapped else sign
 
     def apply(self):
         v, _, w = self.command.current()
+        if self.swapped:
+            w = -w
         for joint, speed in zip(self.joints, (v - w * self.half, v + w * self.half)):
             self.model.set_joint_velocity(joint, speed / self.radius, self.torque)
+
+
+class EncoderOdometry(object):
+    """Gazebo's diff drive odometry from the wheels (odometrySource encoder):
+    dead reckoning from the two joints' rates, every step. ``swapped``:
+    Kinetic's legacy mode, which turns by (left - right) / s as its wheels do;
+    ``twist_in_child_frame``: Melodic's and Noetic's twist (the forward speed),
+    else Kinetic's (dx/dt and dy/dt of the odometry frame, #719)."""
+
+    def __init__(self, radius, separation, swapped=False, twist_in_child_frame=True):
+        self.radius, self.separation = radius, separation
+        self.swapped, self.child_frame = bool(swapped), bool(twist_in_child_frame)
+        self.reset()
+
+    def reset(self):
+        self.pose, self.twist = [0.0, 0.0, 0.0], (0.0, 0.0, 0.0)
+
+    def step(self, left_rate, right_rate, dt):
+        """Integrate ``dt`` s of the leftJoint's and rightJoint's rates (rad/s)."""
+        sl, sr = left_rate * self.radius * dt, right_rate * self.radius * dt
+        b, travelled = self.separation, sl + sr
+        turned = sl - sr if self.swapped else sr - sl
+        x, y, theta = self.pose
+        heading = theta + turned / (2.0 * b)
+        dx, dy = travelled / 2.0 * math.cos(heading), travelled / 2.0 * math.sin(heading)
+        self.pose = [x + dx, y + dy, theta + turned / b]
+        if self.child_frame:
+            self.twist = (math.copysign(math.hypot(dx, dy), travelled) / dt, 0.0,
+                          turned / b / dt)
+        else:
+            self.twist = (dx / dt, dy / dt, turned / b / dt)
 
 
 class PlanarMove(object):

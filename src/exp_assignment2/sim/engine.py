@@ -18,7 +18,7 @@ import math
 import threading
 
 
-from exp_assignment2.sim import urdf as urdf_reader
+from exp_assignment2.sim import releases, urdf as urdf_reader
 from exp_assignment2.sim.model import Model
 from exp_assignment2.sim.pacing import MAX_REAL_TIME_FACTOR, Pacer
 from exp_assignment2.sim.physics import Physics
@@ -60,7 +60,8 @@ class Engine(object):
     :param registry: ``{filename: Plugin subclass}``; other plugin file names
         get one warning each and are ignored, as Gazebo would fail to load them
     :param bounds: (x_min, x_max, y_min, y_max) that driven bodies keep within
-    :param settings: host settings handed to plugins (``EngineHandle.settings``)
+    :param settings: host settings handed to plugins (``EngineHandle.settings``);
+        ``ros_release`` names the :class:`~.releases.Release` its plugins follow
     :param log: an object with ``info``, ``warn``, ``error`` (default: logging)
     :param max_real_time_factor: real_time_factor 0's ceiling (0: none; see
         :mod:`.pacing`)
@@ -69,6 +70,8 @@ class Engine(object):
     def __init__(self, time_step=0.01, real_time_factor=1.0, registry=None, bounds=None,
                  egl=False, settings=None, log=None, paused=False,
                  max_real_time_factor=MAX_REAL_TIME_FACTOR):
+        self.settings = dict(settings or {})
+        self.release = releases.release(self.settings.get('ros_release'))  # ReleaseError
         self.physics = Physics(time_step, egl=egl)
         self.time_step = self.physics.time_step
         self._step_ns = int(round(self.time_step * 1e9))
@@ -79,7 +82,6 @@ class Engine(object):
         self._guard_region = world_region(
             self.bounds, GUARD_MARGIN,
             -FALL_DEPTH if all(map(math.isfinite, self.bounds)) else -MAX_COORDINATE)
-        self.settings = dict(settings or {})
         self.log = log or _Log()
         self.models = collections.OrderedDict()
         self.plugins = collections.OrderedDict()     # model name -> [Plugin]

@@ -5,11 +5,14 @@ A grader (:mod:`exp_assignment2.grading`) listens on a Unix socket whose path
 it puts in the environment (:data:`SOCKET_ENV`); the simulator, and only it,
 connects and streams JSON lines as the world runs:
 
-* ``{"kind": "hello", ...}``: once, at connection (pid, models);
+* ``{"kind": "hello", ...}``: once, at connection (pid, models, and
+  ``ros_release``: the ROS release whose Gazebo plugins the world follows,
+  :mod:`~exp_assignment2.sim.releases`);
 * ``{"kind": "model", "t": T, "facts": {...}}``: each model in the world
   then, and each one spawned later, as it is
   (:func:`~exp_assignment2.sim.model_facts.describe`: its joints, sensors,
-  plugins and the topics they take commands on, whether it is a sphere), and
+  plugins and the topics they take commands on, whether it is a sphere, the
+  ROS release it runs as), and
   ``{"kind": "deleted", "t": T, "name": ...}``: what the grader tells the
   robot, its head and the ball by, whatever they are called;
 * ``{"kind": "state", "t": T, "models": {name: [x, y, z, yaw]},
@@ -114,7 +117,7 @@ class GroundTruth(object):
         self._described, self._generation = {}, None     # name -> the Model described
         self.model_listeners = []        # fn(model) for each model described (the host's)
         link.send({'kind': 'hello', 'pid': os.getpid(), 'time': engine.time,
-                   'models': list(engine.models)})
+                   'models': list(engine.models), 'ros_release': engine.release.name})
         self._describe_changes()
 
     def _describe_changes(self):
@@ -131,7 +134,7 @@ class GroundTruth(object):
             if self._described.get(name) is not model:
                 self._described[name] = model
                 self.link.send({'kind': 'model', 't': now, 'facts': describe(
-                    model, self.engine.plugins.get(name, ()))})
+                    model, self.engine.plugins.get(name, ()), self.engine.release.name)})
                 for listener in self.model_listeners:
                     listener(model)
 

@@ -52,12 +52,14 @@ def _sensors(urdf):
     return out
 
 
-def describe(model, plugins):
+def describe(model, plugins, ros_release=None):
     """The facts of a spawned :class:`~.model.Model` and its loaded plugins
-    (each plugin's :meth:`~.plugins.base.Plugin.facts`), as JSON-ready data."""
+    (each plugin's :meth:`~.plugins.base.Plugin.facts`), as JSON-ready data;
+    ``ros_release``: the release whose Gazebo plugins ran it (its name)."""
     urdf = model.urdf
     sphere = _sphere(urdf)
-    return {'name': model.name, 'namespace': model.namespace, 'root': urdf.root,
+    return {'name': model.name, 'namespace': model.namespace, 'ros_release': ros_release,
+            'root': urdf.root,
             'static': bool(model.static), 'kinematic': bool(model.kinematic),
             'links': list(urdf.links), 'joints': _joints(urdf),
             'sphere': sphere[0] if sphere else None,

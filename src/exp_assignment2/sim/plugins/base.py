@@ -12,7 +12,8 @@ classes) and gives it three things:
   and ``self.sensor``, the ``<sensor>`` it sits in, if any;
 * ``self.engine``: an :class:`EngineHandle`, the narrow view of the engine:
   simulated time, the time step, the world's bounds, :meth:`~EngineHandle.call_soon`
-  to run work in the simulation thread, shared resources and the host's settings.
+  to run work in the simulation thread, shared resources, the host's settings
+  and the ROS release whose plugins it follows (:mod:`exp_assignment2.sim.releases`).
 
 And the engine calls its hooks, always from the simulation thread:
 
@@ -126,6 +127,12 @@ class EngineHandle(object):
     def settings(self):
         """The host's settings (dict), e.g. camera size overrides, command timeout."""
         return self._engine.settings
+
+    @property
+    def release(self):
+        """The ROS release whose Gazebo plugins this world follows
+        (:class:`~exp_assignment2.sim.releases.Release`)."""
+        return self._engine.release
 
     @property
     def log(self):

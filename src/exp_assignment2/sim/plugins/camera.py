@@ -87,7 +87,9 @@ class CameraPlugin(Plugin):
     def load(self):
         settings = dict(self.engine.settings.get('camera') or {})
         self.spec = spec = sensor_spec(self, settings)
-        self.frame_id = self.options.text('frameName', spec.link).lstrip('/')
+        # Kinetic and Melodic prefix it with the robot namespace (releases.py)
+        self.frame_id = self.engine.release.frame(self.options.text('frameName', spec.link),
+                                                  self.namespace)
         base = self.topic(spec.name)
         image = self.options.text('imageTopicName', 'image_raw')
         self.on_subscribed = None      # called when someone starts watching a stream

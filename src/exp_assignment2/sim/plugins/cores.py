@@ -4,9 +4,7 @@ read, the drive built, commands applied at the update rate. The ROS plugins
 benchmark register these cores under the same file names and drive the
 models by hand, through the very same stepping code.
 """
-import math
-
-from exp_assignment2.sim.drives import DiffDrive, PlanarMove, VelocityCommand
+from exp_assignment2.sim.drives import DiffDrive, EncoderOdometry, PlanarMove, VelocityCommand
 from exp_assignment2.sim.plugins.base import Plugin, PluginError
 
 ODOMETRY_SOURCES = ('world', 'encoder')
@@ -64,20 +62,31 @@ class DriveCore(Plugin):
 class DiffDriveCore(DriveCore):
     """``libgazebo_ros_diff_drive.so`` without ROS: leftJoint, rightJoint,
     wheelSeparation, wheelDiameter, wheelTorque, updateRate, odometrySource
-    (world|encoder). ``legacyMode`` is accepted and, as in Noetic, not read:
-    see :class:`~exp_assignment2.sim.drives.DiffDrive`."""
+    (world|encoder), and legacyMode as the engine's ROS release reads it
+    (:mod:`~exp_assignment2.sim.releases`: Kinetic swaps the wheels, true
+    when absent; Melodic and Noetic accept the tag and do not read it)."""
 
     FILENAMES = ('libgazebo_ros_diff_drive.so',)
 
     def load(self):
-        o = self.options
+        o, release = self.options, self.engine.release
         self.command = velocity_command(self)
+        text = o.raw('legacyMode')
+        legacy, understood = release.boolean(text, None)
+        if release.reads_legacy_mode and legacy is None:    # Gazebo's ROS_ERROR, ROS_WARN
+            (self.engine.log.error if understood else self.engine.log.warn)(
+                '%s: %s, defaults to %s (ROS %s): the wheels are swapped, as in an old '
+                'package; set it to false for a new package'
+                % (o.where, 'missing <legacyMode>' if understood else
+                   '<legacyMode> %r is not true or false' % text,
+                   str(release.legacy_mode).lower(), release.name))
         try:
             self.drive = DiffDrive(self.model, o.text('leftJoint', 'left_joint'),
                                    o.text('rightJoint', 'right_joint'),
                                    o.number('wheelSeparation', 0.34, positive=True),
                                    o.number('wheelDiameter', 0.15, positive=True),
-                                   o.number('wheelTorque', 5.0, positive=True), self.command)
+                                   o.number('wheelTorque', 5.0, positive=True), self.command,
+                                   swapped=release.swaps_wheels(legacy))
         except ValueError as exc:
             raise PluginError('%s: %s' % (o.where, exc))
         self.every = Every(o.number('updateRate', 100.0, minimum=0.0), lambda: self.engine.time)
@@ -86,18 +95,26 @@ class DiffDriveCore(DriveCore):
             self.engine.log.warn('%s: odometrySource %r is not world or encoder; using world'
                                  % (o.where, source))
             source = 'world'
-        self.encoder = source == 'encoder'
-        self.encoder_pose, self.encoder_twist = [0.0, 0.0, 0.0], (0.0, 0.0)
+        self.encoder = None
+        if source == 'encoder':
+            self.encoder = EncoderOdometry(self.drive.radius, 2.0 * self.drive.half,
+                                           self.drive.swapped,
+                                           release.encoder_twist_in_child_frame)
         # wheels grip; everything else that touches the ground (a caster) slides
         wheels = {self.model.urdf.joints[j].child for j in self.drive.joints}
         for link in self.model.body.links:
             self.model.set_friction(link, 1.0 if link in wheels else 0.0,
                                     spinning=0.001 if link in wheels else 0.0)
 
+    def facts(self):
+        return dict(DriveCore.facts(self), legacy_mode=self.drive.swapped)
+
     def before_step(self):
-        # as Gazebo's UpdateChild: at the update rate, report, then set the wheels
-        if self.encoder:
-            self._integrate_encoders()
+        # as Gazebo's UpdateChild: encoders every step; at the update rate,
+        # report, then set the wheels
+        if self.encoder is not None:
+            _, _, rates, _ = self.model.joint_states(self.drive.joints)
+            self.encoder.step(rates[0], rates[1], self.engine.time_step)
         if self.every.due():
             self.on_update()
             self.drive.apply()
@@ -105,21 +122,11 @@ class DiffDriveCore(DriveCore):
     def on_update(self):
         """At the update rate, before the wheels are set (the ROS plugin publishes)."""
 
-    def _integrate_encoders(self):
-        """Gazebo's encoder odometry: dead reckoning from the wheel rates."""
-        _, _, rates, _ = self.model.joint_states(self.drive.joints)
-        dt, r, b = self.engine.time_step, self.drive.radius, 2.0 * self.drive.half
-        sl, sr = rates[0] * r * dt, rates[1] * r * dt
-        x, y, theta = self.encoder_pose
-        heading = theta + (sr - sl) / (2.0 * b)
-        self.encoder_pose = [x + (sl + sr) / 2.0 * math.cos(heading),
-                             y + (sl + sr) / 2.0 * math.sin(heading), theta + (sr - sl) / b]
-        self.encoder_twist = ((sl + sr) / 2.0 / dt, (sr - sl) / b / dt)
-
     def reset(self):
         self.command.reset()
         self.every.reset()
-        self.encoder_pose = [0.0, 0.0, 0.0]
+        if self.encoder is not None:
+            self.encoder.reset()
 
 
 class PlanarMoveCore(DriveCore):

@@ -1,8 +1,8 @@
 """Gazebo's drive plugins with their ROS topics: ``libgazebo_ros_diff_drive.so``
 and ``libgazebo_ros_planar_move.so``, with the options and defaults of
-Noetic's gazebo_ros_pkgs. Each subscribes its command topic and publishes
-odometry and TF at its update rate; the driving itself is the ROS-free core
-(:mod:`.cores`)."""
+gazebo_ros_pkgs (what changed between ROS releases: :mod:`..releases`).
+Each subscribes its command topic and publishes odometry and TF at its update
+rate; the driving itself is the ROS-free core (:mod:`.cores`)."""
 import math
 
 import rospy
@@ -23,17 +23,20 @@ def yaw_quaternion(yaw):
 class DiffDrivePlugin(DiffDriveCore):
     """``libgazebo_ros_diff_drive.so`` (see :class:`~.cores.DiffDriveCore`) with
     commandTopic, odometryTopic, odometryFrame, robotBaseFrame, publishTf,
-    publishOdomTF, publishWheelTF, publishWheelJointState. Sets the parameter
-    ``<ns>/turn_sign`` (+1: +angular.z turns left) for nodes that must know."""
+    publishOdomTF, publishWheelTF, publishWheelJointState. Its frames are
+    prefixed with the robot namespace where the release did (Kinetic,
+    Melodic). Sets the parameter ``<ns>/turn_sign`` (+1: +angular.z turns
+    left) for nodes that must know."""
 
     def load(self):
         DiffDriveCore.load(self)
-        o = self.options
-        base = o.text('robotBaseFrame', 'base_footprint')
+        o, release = self.options, self.engine.release
+        base = release.frame(o.text('robotBaseFrame', 'base_footprint'), self.namespace)
         self.odometry = None
-        if o.boolean('publishTf', True):     # Noetic: no publishTf, no odometry at all
+        if o.boolean('publishTf', True):     # every release: no publishTf, no odometry at all
             self.odometry = OdometryPublisher(self.topic(o.text('odometryTopic', 'odom')),
-                                              o.text('odometryFrame', 'odom'), base,
+                                              release.frame(o.text('odometryFrame', 'odom'),
+                                                            self.namespace), base,
                                               tf=o.boolean('publishOdomTF', True))
         self.wheel_states = None
         if o.boolean('publishWheelJointState', False):
@@ -48,10 +51,10 @@ class DiffDrivePlugin(DiffDriveCore):
     def on_update(self):
         when = stamp(self.engine)
         if self.odometry is not None:
-            if self.encoder:
-                x, y, yaw = self.encoder_pose
-                v, w = self.encoder_twist
-                self.odometry.publish(when, (x, y, 0.0), yaw_quaternion(yaw), (v, 0.0, 0.0),
+            if self.encoder is not None:
+                x, y, yaw = self.encoder.pose
+                vx, vy, w = self.encoder.twist
+                self.odometry.publish(when, (x, y, 0.0), yaw_quaternion(yaw), (vx, vy, 0.0),
                                       (0.0, 0.0, w))
             else:
                 position, quaternion = self.model.pose()
@@ -69,8 +72,10 @@ class DiffDrivePlugin(DiffDriveCore):
         for name in self.drive.joints:
             joint = self.model.urdf.joints[name]
             (x, y, z), q = self.model.relative_pose(joint.parent, joint.child)
-            tf = TransformStamped(header=Header(stamp=when, frame_id=joint.parent),
-                                  child_frame_id=joint.child)
+            frame = self.engine.release.frame      # the release's tf prefix, as the odometry's
+            tf = TransformStamped(header=Header(stamp=when, frame_id=frame(joint.parent,
+                                                                           self.namespace)),
+                                  child_frame_id=frame(joint.child, self.namespace))
             t, r = tf.transform.translation, tf.transform.rotation
             t.x, t.y, t.z = x, y, z
             r.x, r.y, r.z, r.w = q

@@ -40,12 +40,27 @@ PATIENCE = 2.0    # wall s more for a joint controller whose joint is not set ye
 
 class RosControlPlugin(Plugin):
     """gazebo_ros_control (see the module docstring): robotNamespace,
-    controlPeriod, robotSimType (the default one is the only one here)."""
+    controlPeriod, robotSimType (the default one is the only one here), and
+    legacyModeNS as the engine's ROS release reads it: where DefaultRobotHWSim
+    looks for Gazebo's joint PID gains (:attr:`pid_gains`, reported in the
+    plugin's facts; the joints here are driven by the controllers' motors
+    whatever gains are there)."""
 
     FILENAMES = ('libgazebo_ros_control.so',)
+    DEFAULT_SIM = 'gazebo_ros_control/DefaultRobotHWSim'
 
     def load(self):
         self.ns = '/' + self.namespace if self.namespace else ''
+        self.pid_gains = None
+        if self.options.text('robotSimType', self.DEFAULT_SIM) == self.DEFAULT_SIM:
+            release, legacy = self.engine.release, self.options.boolean('legacyModeNS', None)
+            if legacy is None and release.reads_legacy_mode_ns:     # as Gazebo's ROS_ERROR
+                self.engine.log.error(
+                    '%s: missing <legacyModeNS> while using DefaultRobotHWSim, defaults to %s '
+                    '(ROS %s): the joints\' PID gains are read from /gazebo_ros_control/'
+                    'pid_gains, not under the robot namespace'
+                    % (self.options.where, str(release.legacy_mode_ns).lower(), release.name))
+            self.pid_gains = release.pid_gains_namespace(self.namespace, legacy)
         self.manager = ControllerManager(self, self.ns)
         self._lock, self._timer = threading.Lock(), None
         initial = param_watch.watch_namespace(self.ns or '/', self._on_params)
@@ -78,6 +93,9 @@ class RosControlPlugin(Plugin):
         if waiting:         # read once more, then warned about if still without a joint
             with self._lock:
                 self._rescan_in(PATIENCE, lambda: self._rescan(patient=False))
+
+    def facts(self):
+        return dict(Plugin.facts(self), pid_gains=self.pid_gains)
 
     def before_step(self):
         self.manager.apply()
