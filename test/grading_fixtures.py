@@ -25,6 +25,7 @@ EXPECTED = {'works': 'passed', 'tabs': 'passed', 'cpp_broken': 'not_built',
             'missing_node': 'passed', 'imshow': 'passed', 'renamed': 'passed',
             'tutorials': 'passed'}
 EXPECTED.update(__import__('shape_fixtures').EXPECTED)     # each shape a submission comes in
+EXPECTED.update(__import__('release_fixtures').EXPECTED)   # the ROS release it was written for
 
 RAISES = '''#!/usr/bin/env python3
 import rospy
@@ -307,13 +308,19 @@ def _tutorials(dest):
 
 def make_folder(dest, names=None):
     """Write the fixture submissions named (default: all) into ``dest``."""
+    import release_fixtures
     import shape_fixtures
     os.makedirs(dest, exist_ok=True)
+    with open(os.path.join(dest, 'grading.yaml'), 'w') as f:
+        f.write(release_fixtures.FOLDER_SETTINGS)
     names = list(names or EXPECTED)
     scratch = os.path.join(dest, '.scratch')
     for name in names:
         if name in shape_fixtures.EXPECTED:
             shape_fixtures.make(name, dest)
+            continue
+        if name in release_fixtures.EXPECTED:
+            release_fixtures.make(name, dest)
             continue
         if name in ('zipped', 'tarred'):
             package = os.path.join(scratch, name, 'my_dog')      # one level down

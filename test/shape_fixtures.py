@@ -9,6 +9,7 @@ import os
 import shutil
 
 import grading_fixtures
+import release_fixtures
 
 # name -> expected verdict
 EXPECTED = {'workspace': 'passed', 'three_packages': 'passed', 'course_repo': 'passed',
@@ -16,7 +17,7 @@ EXPECTED = {'workspace': 'passed', 'three_packages': 'passed', 'course_repo': 'p
             'nothing': 'not_built'}
 TOPLEVEL = '/opt/ros/kinetic/share/catkin/cmake/toplevel.cmake'   # catkin_init_workspace's
 
-WORKSPACE_README = """# My dog (ROS Kinetic)
+WORKSPACE_README = """# My dog
 
     cd ~/catkin_ws
     catkin_make
@@ -40,8 +41,10 @@ def _edit(path, old, new):
 
 
 def _workspace(dest):
-    """catkin_make's workspace as committed: the toplevel link, build/ and devel/."""
-    grading_fixtures._package(os.path.join(dest, 'src', 'exp_assignment2'))
+    """catkin_make's workspace as committed by a Kinetic student: the toplevel
+    link into /opt/ros/kinetic (which says the release), build/ and devel/."""
+    release_fixtures.kinetic_package(os.path.join(dest, 'src', 'exp_assignment2'))
+    os.remove(os.path.join(dest, 'src', 'exp_assignment2', 'README.md'))
     os.symlink(TOPLEVEL, os.path.join(dest, 'src', 'CMakeLists.txt'))
     _write(os.path.join(dest, '.catkin_workspace'), '# This file currently only serves '
            'to mark the location of a catkin workspace for tool integration\n')

@@ -16,6 +16,8 @@ import shlex
 
 import yaml
 
+from exp_assignment2.sim.releases import RELEASES
+
 README_NAMES = ('README.md', 'README.MD', 'Readme.md', 'readme.md', 'README', 'README.txt',
                 'README.rst')
 # packages of programs that only watch (rosrun rqt_graph rqt_graph, ...)
@@ -31,9 +33,11 @@ PLACEHOLDER = re.compile(r'[<>{}\[\]]|\.\.\.|\bYOUR_|\bpackage_name\b', re.IGNOR
 
 TOP_KEYS = {'profile': str, 'duration': (int, float), 'commands': list, 'delay': (int, float),
             'real_time_factor': (int, float), 'submissions': dict, 'with': list,
-            'template': (list, str)}     # the similarity report's (similarity_run.py)
-ONE_KEYS = {'commands': list, 'skip': bool, 'roles': dict}
+            'template': (list, str),     # the similarity report's (similarity_run.py)
+            'release': str}              # the course's first ROS release (ros_release.py)
+ONE_KEYS = {'commands': list, 'skip': bool, 'roles': dict, 'release': str}
 ROLE_KEYS = ('robot', 'head', 'ball')     # a submission's roles named by the teacher (roles.py)
+RELEASE_NAMES = tuple(RELEASES)      # the releases the simulator can play
 
 
 class TeacherFileError(Exception):
@@ -168,6 +172,9 @@ def _check_keys(data, allowed, where):
     for key in ('duration', 'delay', 'real_time_factor'):
         if key in data and not (0 <= data[key] <= 100000):
             raise TeacherFileError('%s: %s: %r is out of range' % (where, key, data[key]))
+    if 'release' in data and data['release'] not in RELEASE_NAMES:
+        raise TeacherFileError('%s: release: %r is not one of %s' % (
+            where, data['release'], ', '.join(RELEASE_NAMES)))
     for key, name in (data.get('roles') or {}).items():
         if key not in ROLE_KEYS or not isinstance(name, str) or not name.strip():
             raise TeacherFileError('%s: roles: %r: %r is not one of %s naming a model or joint'

@@ -13,7 +13,7 @@ import html
 import os
 import re
 
-from exp_assignment2.grading import report_judged, report_packages
+from exp_assignment2.grading import report_judged, report_packages, report_releases
 from exp_assignment2.grading.report_marks import _number
 
 WORDS = {
@@ -179,6 +179,7 @@ def page(summary, run, pictures, profile, clean):
     parts.append('<h2>How it was started</h2><pre>%s</pre>' % _e(clean(
         '\n'.join(run.get('commands') or []))))
     parts += report_packages.packages_section(run, clean)
+    parts += report_releases.releases_section(run, summary.get('releases'), clean)
     pics = [(k, pictures.get(k)) for k in ('top', 'head')] + \
         list((pictures.get('frames') or {}).items())     # the moments in their order
     for title, chosen, _ in ((pictures.get('windows') or {}).get('rows') or []):

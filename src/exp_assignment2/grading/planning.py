@@ -18,7 +18,7 @@ import os
 import shutil
 import tempfile
 
-from exp_assignment2.grading import assignment, build_deps, launch_nodes, profiles
+from exp_assignment2.grading import assignment, build_deps, launch_nodes, profiles, ros_release
 from exp_assignment2.grading import packages as packages_
 from exp_assignment2.grading.choose import Context, choose, own_has
 from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, \
@@ -143,8 +143,13 @@ def read_submission(submission, scratch, teacher, profile, provided, hidden, kno
                                      result.get('build_packages') or ())
     needs = build_deps.resolve(built, provided | set(own),
                                known if known is not None else build_deps.available_debian())
+    release = ros_release.choose(
+        profile['releases'], teacher.get('release') or profile['release'],
+        ((teacher.get('submissions') or {}).get(submission.name) or {}).get('release'),
+        root, unpacked.notes, fallback_robot=os.path.join(REPO, 'urdf'))
     result.update(package=main.name, packages=listed, rejected=None, debian=needs['debian'],
-                  build=[p.rel for p in built],
+                  build=[p.rel for p in built], release=release['release'],
+                  release_why=release['why'], releases_next=release['next'],
                   notes=unpacked.notes + result['notes'] + needs['notes'])
     if len(found) > 1:
         result['notes'].insert(0, '%d packages found: %s built (%s)' % (

@@ -19,7 +19,7 @@ from exp_assignment2.grading.scores import check_spec
 REQUIRED = ('name', 'duration', 'default_commands', 'robot', 'checks')
 KEYS = {'name', 'title', 'duration', 'default_commands', 'world_commands', 'delay', 'cpu_per_run',
         'memory_limit_mb', 'process_limit', 'robot', 'ball', 'ball_radius', 'camera',
-        'record_topics', 'checks', 'assignment'}
+        'record_topics', 'checks', 'assignment', 'releases', 'release'}
 CHECK_KEYS = {'name', 'metric', 'min', 'max', 'reach', 'joint', 'topic', 'tolerance',
               'points', 'zero', 'visibility'}      # the last three: the rubric (grading.scores)
 DEFAULTS = {'title': '', 'world_commands': [], 'delay': 5, 'cpu_per_run': 1.0,
@@ -27,7 +27,10 @@ DEFAULTS = {'title': '', 'world_commands': [], 'delay': 5, 'cpu_per_run': 1.0,
             'camera': None, 'record_topics': [],
             # the names the assignment's package, or the folder holding it, goes by: in a
             # repository of the whole course, the package a run is about (assignment.py)
-            'assignment': []}
+            'assignment': [],
+            # the ROS releases the course allows, and the one a submission that names
+            # none is run in first (ros_release.py)
+            'releases': ['noetic'], 'release': None}
 
 
 class ProfileError(Exception):
@@ -84,6 +87,15 @@ def check(data, where='profile'):
     if not (isinstance(profile['assignment'], list)
             and all(isinstance(n, str) and n for n in profile['assignment'])):
         raise ProfileError('%s: assignment: a list of names (the package, its folder)' % where)
+    from exp_assignment2.sim.releases import RELEASES
+    if not (isinstance(profile['releases'], list) and profile['releases'] and
+            all(r in RELEASES for r in profile['releases'])):
+        raise ProfileError('%s: releases: %r: a list of ROS releases of %s' % (
+            where, profile['releases'], ', '.join(RELEASES)))
+    profile['release'] = profile['release'] or profile['releases'][0]
+    if profile['release'] not in profile['releases']:
+        raise ProfileError('%s: release: %r is not one of its releases (%s)' % (
+            where, profile['release'], ', '.join(profile['releases'])))
     if not (isinstance(profile['world_commands'], list)
             and all(isinstance(c, str) for c in profile['world_commands'])):
         raise ProfileError('%s: world_commands: a list of command lines' % where)

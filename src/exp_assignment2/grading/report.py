@@ -16,7 +16,7 @@ import shutil
 import statistics
 
 from exp_assignment2.grading import feedback, figures, gradescope, metrics, record, \
-    report_failures, report_judged, report_marks, report_packages
+    report_failures, report_judged, report_marks, report_packages, report_releases
 from exp_assignment2.grading import roles as roles_
 from exp_assignment2.grading.logs import read_log
 from exp_assignment2.grading.report_camera import camera_section, window_pictures
@@ -155,6 +155,7 @@ def _page(summary, runs, runs_dir, pictures, profile):
     for note in main.get('notes') or []:
         parts.append('<p>note: %s</p>' % _e(note))
     parts += report_packages.packages_section(main)
+    parts += report_releases.releases_section(main, summary.get('releases'))
     if main.get('readme_commands'):     # every README command: ran, or left out and why
         parts.append('<h3>The README\'s commands</h3><table><tr><th>command</th><th></th>'
                      '<th>why</th></tr>' + ''.join(
@@ -262,8 +263,11 @@ def _index(summaries, pictures, profile, title):
 def write(report_dir, profile, title=None):
     """Make the report from ``report_dir/runs``; returns the summaries."""
     runs_dir = os.path.join(report_dir, 'runs')
-    runs = load_runs(runs_dir)
+    every = load_runs(runs_dir)
+    runs, tried = report_releases.counted(every, profile)   # in several releases: the better
     summaries = report_marks.add_scores(summarise(runs), runs, profile)
+    for name, summary in summaries.items():
+        summary['releases'] = tried.get(name) or []
     pages = os.path.join(report_dir, 'pages')
     img_dir = os.path.join(pages, 'img')
     shutil.rmtree(pages, ignore_errors=True)
@@ -281,7 +285,7 @@ def write(report_dir, profile, title=None):
     with open(os.path.join(report_dir, 'index.html'), 'w') as f:
         f.write(_index(summaries, pictures, profile, title))
     with open(os.path.join(report_dir, 'report.json'), 'w') as f:
-        json.dump({'profile': profile, 'submissions': list(summaries.values()), 'runs': runs},
+        json.dump({'profile': profile, 'submissions': list(summaries.values()), 'runs': every},
                   f, indent=1, default=str)
     report_marks.write_csv(os.path.join(report_dir, 'grades.csv'), summaries, profile)
     # the index's column of each one's highest pair, when a similarity report is there

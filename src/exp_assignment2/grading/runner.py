@@ -23,6 +23,7 @@ from exp_assignment2.grading.submissions import Submission, SubmissionError, pac
 from exp_assignment2.grading.truth import TruthServer
 from exp_assignment2.launch_surface.viewer import FRAME_RATE_ENV as VIEWER_FRAME_RATE_ENV
 from exp_assignment2.sim.ground_truth import SOCKET_ENV, TOPICS_ENV
+from exp_assignment2.sim.releases import ENV as RELEASE_ENV
 
 BUILD_LIMIT = 900.0          # wall s for a build
 START_SLACK = 120.0          # wall s on top of the duration: set-up, starting, ending
@@ -102,6 +103,8 @@ class Run(object):
             # own 15 a second Gazebo's window cost more than the simulator
             VIEWER_FRAME_RATE_ENV: '2',
         })
+        if self.spec.release:       # the release the student wrote for (ros_release.py)
+            env[RELEASE_ENV] = self.spec.release
         env['PATH'] = '/usr/bin:/bin:/usr/sbin:/sbin'
         # the original-code shell writes its python launchers into the workspace:
         # a directory of the run's own is shown there (made once, outside, as
@@ -124,7 +127,8 @@ class Run(object):
                   'started': started, 'commands': list(spec.commands),
                   'commands_from': spec.commands_from, 'notes': list(spec.notes),
                   'readme_commands': list(spec.readme_commands),
-                  'packages': list(spec.packages)}
+                  'packages': list(spec.packages), 'release': spec.release,
+                  'release_why': spec.release_why}
         try:
             self._fresh_dirs()
             self._go(result)

@@ -9,7 +9,8 @@ key (:func:`settings`).
 
 FIELDS = ('name', 'path', 'kind', 'label', 'seed', 'profile', 'duration',
           'real_time_factor', 'hidden', 'version', 'package', 'commands', 'commands_from',
-          'readme_commands', 'notes', 'refused', 'packages', 'build', 'debian', 'rejected')
+          'readme_commands', 'notes', 'refused', 'packages', 'build', 'debian', 'rejected',
+          'release', 'release_why', 'releases_next')
 
 
 class RunSpec(object):
@@ -24,7 +25,10 @@ class RunSpec(object):
     ``packages``: every package found, each ``{'name', 'rel', 'built',
     'why'}``; ``build``: the folders (relative to the submission's root) of
     those the run builds, the main one first; ``debian``: what the build
-    needs from Debian (installed before the run, outside its sandbox)."""
+    needs from Debian (installed before the run, outside its sandbox);
+    ``release``: the ROS release the simulator plays (None: the teacher's
+    environment's), ``release_why``, and ``releases_next``: those to run it
+    in when its checks fail in this one (:mod:`.ros_release`)."""
 
     def __init__(self, **fields):
         unknown = set(fields) - set(FIELDS)
@@ -33,7 +37,8 @@ class RunSpec(object):
         defaults = {'seed': 1, 'hidden': [], 'version': '', 'package': None, 'commands': [],
                     'commands_from': '', 'readme_commands': [], 'notes': [], 'refused': None,
                     'real_time_factor': 1.0, 'label': None, 'packages': [], 'build': [],
-                    'debian': [], 'rejected': None}
+                    'debian': [], 'rejected': None, 'release': None, 'release_why': '',
+                    'releases_next': []}
         for key in FIELDS:
             value = fields.get(key, defaults.get(key))
             setattr(self, key, list(value) if isinstance(value, (list, tuple)) else value)
