@@ -13,7 +13,7 @@ import html
 import os
 import re
 
-from exp_assignment2.grading import report_failures, report_judged
+from exp_assignment2.grading import report_failures, report_judged, verdicts
 from exp_assignment2.grading.report_marks import _number
 
 WORDS = {
@@ -109,7 +109,7 @@ def to_fix(summary, run, clean):
             _e(clean(e.get('command'))), _e(clean(e.get('line')))))
     errors = run.get('errors') or []
     for d in run.get('died') or []:
-        said = next((e['summary'] for e in errors if e['source'] == d.get('log')), '')
+        said = '' if d.get('abort') else verdicts.why_it_died(errors, d)
         did = report_failures.how_it_ended(d)
         items.append('The node <code>%s</code> died (exit code %s%s)%s' % (
             _e(d['node']), _e(d.get('exit', d.get('code'))), '; ' + _e(did) if did else '',

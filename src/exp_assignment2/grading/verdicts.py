@@ -49,7 +49,7 @@ import os
 from exp_assignment2.grading import logs as logs_
 from exp_assignment2.grading.seen import Seen, gather
 
-__all__ = ['RULES', 'Seen', 'VERDICTS', 'decide', 'gather', 'judge']
+__all__ = ['RULES', 'Seen', 'VERDICTS', 'decide', 'gather', 'judge', 'why_it_died']
 VERDICTS = ('passed', 'failed_checks', 'crashed', 'timed_out', 'not_started', 'not_built',
             'grader_error')
 
@@ -72,7 +72,7 @@ def _build_reason(s):
     return '%s%s' % (where + ': ' if where else '', message)
 
 
-def _why(s, d):
+def why_it_died(errors, d):
     """What a dead node said last: its traceback (in its own log, in the output
     before its death, in its command's log), else its abort's message."""
     own = {l['log'] for l in d.get('node_logs') or ()}
@@ -80,7 +80,7 @@ def _why(s, d):
                  os.path.basename(e['source']).startswith(d['node'] + '.'),
                  lambda e: e['summary'] in (d.get('output') or ''),
                  lambda e: e['source'] == d['log']):
-        error = next((e for e in s.errors if fits(e)), None)
+        error = next((e for e in errors if fits(e)), None)
         if error:
             return error['summary']
     return (d.get('abort') or '').split('\n')[0]
@@ -90,7 +90,7 @@ def _death(s, d):
     """'NODE died (exit code N): why', with how often when roslaunch restarted it."""
     times = ' %d times' % d['deaths'] if d.get('deaths', 1) > 1 else ''
     again = ', restarted by roslaunch (respawn)' if d.get('restarted') else ''
-    why = _why(s, d)
+    why = why_it_died(s.errors, d)
     return '%s died%s (exit code %s)%s%s' % (d['node'], times, logs_.exit_name(d['code']),
                                              again, ': ' + why if why else '')
 

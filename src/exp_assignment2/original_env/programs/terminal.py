@@ -1,35 +1,25 @@
 #!/usr/bin/python3
 """Terminal windows of the original-code shell: ``gnome-terminal``, ``xterm``,
-``konsole``, ``terminator`` and ``x-terminal-emulator`` (environment.py
-copies this file under each name to $EXP2_ORIGINAL_BIN, first on PATH).
+``konsole``, ``terminator``, ``x-terminal-emulator`` (environment.py copies
+this file under each name to $EXP2_ORIGINAL_BIN, first on PATH).
 
-Students open nodes in windows of their own: ``launch-prefix="xterm -e"``
-in a launch file, ``gnome-terminal -- rosrun ...`` or ``gnome-terminal -x sh
--c "..."`` in a start script. Here each such command runs in a window of
-Debian's xterm on the display (a grading run has one of its own, whose
-windows its page shows), as the program named would run it:
+Students open nodes in windows of their own (``launch-prefix="xterm -e"``,
+``gnome-terminal -x sh -c "..."`` in a start script). Each command runs here
+in a window of Debian's xterm on the display (a grading run has its own,
+whose windows its page shows), as the program named runs it: gnome-terminal
+with its own arguments (:data:`GRAMMARS`; each ``--tab``/``--window`` a
+window) returns once its windows are open, as when it hands them to its
+server; xterm (its own options), konsole and terminator wait for their
+command and end with its exit status (a signal as that signal), where
+xterm's own is always 0, so that roslaunch's ``process has died`` line on a
+node in a window says how the node ended; a SIGINT or SIGTERM to them
+(roslaunch ending its nodes) goes on to the command's process group.
 
-* ``gnome-terminal`` takes its own arguments (``-- CMD...``, ``-x``/``--execute
-  CMD...``, ``-e``/``--command "CMD"``, ``--tab``/``--window`` each starting the
-  next window, ``-t``/``--title``, ``--geometry``, ``--working-directory``,
-  ``--wait``; the rest of its options are taken and change nothing) and
-  returns as soon as its windows are open, as gnome-terminal does when it has
-  handed them to its server;
-* ``xterm`` (and ``x-terminal-emulator``) is Debian's xterm with its own options;
-* ``konsole -e CMD...``, ``terminator -x CMD...`` or ``-e "CMD"``: in the
-  foreground, as their first window.
-
-The command runs on a pseudo-terminal of the relay (this file run with
-``--exp2-relay`` inside the window), which copies what it writes to the window
-and to the standard output of the program that opened it, as if there were
-no window: roslaunch's screen for ``output="screen"``, the node's
-``-stdout.log`` for ``output="log"``. The foreground ones end with the
-command's exit status (a signal as that signal), where xterm's own is always
-0: roslaunch's ``process has died`` line on a node in a window then says
-how the node ended. A SIGINT or SIGTERM to them (roslaunch ending its
-nodes) reaches the command's process group, as Ctrl-C in the window would.
-
-With no DISPLAY, or no xterm installed, one line and status 1.
+The command runs on a pseudo-terminal of the relay (this file with
+``--exp2-relay``, inside the window), which copies its output to the window
+and, as if there were no window, to the opener's standard output when that
+is a file or a pipe (roslaunch's screen, a node's ``-stdout.log``).
+With no DISPLAY, or no xterm, one line and status 1.
 """
 import fcntl
 import os
