@@ -2,9 +2,10 @@
 
 What was seen is gathered once (:func:`~exp_assignment2.grading.seen.gather`:
 a :class:`~exp_assignment2.grading.seen.Seen` from the run's record, its logs
-through :mod:`exp_assignment2.grading.logs`, and its ground truth); the verdict is the first rule of :data:`RULES` that holds,
-as the CARLA leaderboard's ``FAILURE_MESSAGES`` table. The table's order is
-the precedence (docs/grading.md, "Verdicts", lists it row by row):
+through :mod:`exp_assignment2.grading.logs`, and its ground truth); the
+verdict is the first rule of :data:`RULES` that holds, as the CARLA
+leaderboard's ``FAILURE_MESSAGES`` table. The table's order is the precedence
+(docs/grading.md, "Verdicts", lists it row by row):
 
 1. ``grader_error``: the run's display could not be made (nothing of the student's ran);
 2. ``grader_error``: the sandbox did not start (the driver never said the build's end);
