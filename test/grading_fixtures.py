@@ -1,7 +1,9 @@
 """The grader's fixture folder: submissions written here, one per way a
 submission can end (test/fixtures/grading/base is the dog that works; the
 others are it with one thing changed, e.g. ``missing_node``: its launch file
-also names a node whose script is not there). ``make_folder(dest)`` writes them.
+also names a node whose script is not there; those of roslaunch's rules for
+a node that dies, and of a node in an xterm window, in
+test/launch_rule_fixtures.py). ``make_folder(dest)`` writes them.
 
     /usr/bin/python3 test/grading_fixtures.py DEST    (for bench/ and by hand)
 """
@@ -12,18 +14,21 @@ import sys
 import tarfile
 import zipfile
 
+import launch_rule_fixtures
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 BASE = os.path.join(HERE, 'fixtures', 'grading', 'base')
 STUDENT = os.path.join(HERE, 'fixtures', 'student_pkg')    # its robot and controllers
 DOG = os.path.join('scripts', 'dog.py')
 
-# name -> expected verdict
+# name -> expected verdict ('raises': roslaunch runs on without the dog, and so does the run)
 EXPECTED = {'works': 'passed', 'tabs': 'passed', 'cpp_broken': 'not_built',
-            'raises': 'crashed', 'idle': 'failed_checks', 'hostile': None,
+            'raises': 'failed_checks', 'idle': 'failed_checks', 'hostile': None,
             'zipped': 'passed', 'tarred': 'passed', 'old_names': 'passed',
             'own_world': 'passed', 'alternatives': 'passed', 'other_name': 'passed',
             'missing_node': 'passed', 'imshow': 'passed', 'renamed': 'passed',
-            'tutorials': 'passed'}
+            'tutorials': 'passed', 'helper_dies': 'passed', 'required_dies': 'crashed',
+            'xterm_dog': 'passed'}
 EXPECTED.update(__import__('shape_fixtures').EXPECTED)     # each shape a submission comes in
 EXPECTED.update(__import__('release_fixtures').EXPECTED)   # the ROS release it was written for
 
@@ -370,6 +375,8 @@ def make_folder(dest, names=None):
             _renamed(package)
         elif name == 'tutorials':
             _tutorials(package)
+        elif name in launch_rule_fixtures.FIXTURES:
+            launch_rule_fixtures.FIXTURES[name](package)
     shutil.rmtree(scratch, ignore_errors=True)
     return dest
 

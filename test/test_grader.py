@@ -7,8 +7,10 @@ Python 2's tabs, a C++ node that does not compile, a node that raises at
 start, one that never moves, a hostile one, the dog as a .zip and as a
 .tar.gz, a README offering alternatives, one naming another package, one
 whose launch file names a node that is not there, a node that shows
-every camera frame in a window, a robot, head and ball renamed, and a node
-importing what ROS desktop-full had). Each ends with its expected verdict; the
+every camera frame in a window, a robot, head and ball renamed, a node
+importing what ROS desktop-full had, a helper that dies again and again, a
+required node that dies, and the dog in an xterm window). Each ends with its
+expected verdict; the
 folder and everything outside the runs' directories are unchanged; the
 hostile run costs only its own verdict (the dog graded alone gets the
 verdict it gets beside it); every process of every run is gone; the report's
@@ -28,6 +30,7 @@ import pytest
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import grading_fixtures  # noqa: E402
+import launch_rule_fixtures  # noqa: E402
 import miro_fixtures  # noqa: E402
 from grading_run import FAST, GRADE, snapshot  # noqa: E402
 
@@ -42,8 +45,10 @@ def test_each_submission_gets_its_verdict(graded):
         n: graded['by_name'][n]['reason'] for n in got}
     # the causes, as a teacher reads them
     assert 'counter.cpp:3' in graded['by_name']['cpp_broken']['reason']
-    assert graded['by_name']['raises']['reason'] == \
-        'dog-5 died (exit code 1): RuntimeError: the dog has no legs'
+    # roslaunch runs on without the dog that raised, and so does the run: judged, the death named
+    assert graded['by_name']['raises']['reason'].endswith(
+        '; dog-5 died (exit code 1): RuntimeError: the dog has no legs')
+    assert graded['runs']['raises']['ended_by'] == 'duration'
     assert graded['by_name']['idle']['reason'].startswith('failed: reaches the ball')
     # roslaunch's rule: the node that could not start is noted, on its own command
     (error,) = graded['by_name']['missing_node']['launch_errors']
@@ -105,6 +110,40 @@ def test_a_node_that_shows_its_camera_passes_and_its_window_is_on_its_page(grade
     # a node without a window has no window on its page
     with open(os.path.join(pages, 'works.html')) as f:
         assert '<th>window &ldquo;' not in f.read()
+
+
+def test_roslaunchs_rules_for_a_node_that_dies(graded):
+    """A node that dies ends nothing (roslaunch restarts it with respawn="true"):
+    noted once; a required node's death ends the run as it ends roslaunch."""
+    helper = graded['runs']['helper_dies']
+    assert (helper['verdict'], helper['ended_by']) == ('passed', 'duration'), helper['reason']
+    assert helper['truth']['sim_time'] >= 30 and helper['error_count'] == 0
+    (dead,) = helper['died']
+    assert dead['node'].startswith('robot_state_publisher-') and dead['code'] == 1
+    assert dead['deaths'] >= 2 and dead['restarted'] >= 1 and not dead['required']
+    assert 'Could not find parameter robot_description' in dead['output']
+    with open(os.path.join(graded['out'], 'pages', 'helper_dies.html')) as f:
+        assert 'Nodes that died (1)' in f.read()
+    required = graded['runs']['required_dies']
+    assert (required['verdict'], required['ended_by'], required['required_node']) == (
+        'crashed', 'required_node_died', 'dog-5'), required['reason']
+    assert required['reason'].startswith('dog-5 died (exit code 1): %s; it was required="true"'
+                                         % launch_rule_fixtures.TIRED), required['reason']
+    assert required['truth']['sim_time'] < 20 and required['checks_until'] == 'crashed'
+
+
+def test_a_node_in_an_xterm_window_passes_its_window_on_its_page(graded):
+    """launch-prefix="xterm -e": a real window on the run's display, its output
+    still in roslaunch's screen (the command's log)."""
+    run = graded['runs']['xterm_dog']
+    assert run['verdict'] == 'passed', run['reason']
+    with open(os.path.join(graded['out'], 'pages', 'xterm_dog.html')) as f:
+        page = f.read()
+    assert '<th>window &ldquo;dog.py&rdquo;</th>' in page
+    assert re.search(r'<img class="window" src="[^"]+" alt="dog.py at end">', page)
+    with open(os.path.join(graded['out'], 'runs', 'xterm_dog', 'work', 'logs', 'command-0.log'),
+              errors='replace') as f:
+        assert launch_rule_fixtures.XTERM_SAYS in f.read()
 
 
 def test_a_readme_is_read_as_a_person_reads_it(graded):

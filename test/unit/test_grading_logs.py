@@ -127,12 +127,72 @@ def test_exit_codes_named():
         '1', '-6 (SIGABRT)', '-11 (SIGSEGV)', '-9 (SIGKILL)', '?']
 
 
-def test_the_runner_sees_a_student_death_but_not_a_missing_node(tmp_path):
+# roslaunch's words for a required node's death (pmon.py: the banner glued to its
+# rule, the exit on the next line) and for a node it restarts (respawn="true")
+REQUIRED_DEATH = '''process[dog-5]: started with pid [88]
+Traceback (most recent call last):
+  File "/w/src/scripts/dog.py", line 9, in <module>
+    raise RuntimeError('the dog is tired')
+RuntimeError: the dog is tired
+================================================================================REQUIRED process [dog-5] has died!
+process has died [pid 88, exit code 1, cmd /w/src/scripts/dog.py __name:=dog __log:=/w/ros_home/log/abc/dog-5.log].
+log file: /w/ros_home/log/abc/dog-5*.log
+Initiating shutdown!
+================================================================================
+[ball_spawner-4] killing on exit
+'''
+RESPAWNED = '''process[robot_state_publisher-3]: started with pid [70]
+[ERROR] [1.0]: Could not find parameter robot_description on parameter server
+[robot_state_publisher-3] process has died [pid 70, exit code 1, cmd /usr/lib/robot_state_publisher/robot_state_publisher __name:=robot_state_publisher __log:=/w/ros_home/log/abc/robot_state_publisher-3.log].
+log file: /w/ros_home/log/abc/robot_state_publisher-3*.log
+[robot_state_publisher-3] restarting process
+process[robot_state_publisher-3]: started with pid [75]
+[ERROR] [5.0]: Could not find parameter robot_description on parameter server
+[robot_state_publisher-3] process has died [pid 75, exit code 1, cmd /usr/lib/robot_state_publisher/robot_state_publisher __name:=robot_state_publisher __log:=/w/ros_home/log/abc/robot_state_publisher-3.log].
+log file: /w/ros_home/log/abc/robot_state_publisher-3*.log
+[robot_state_publisher-3] restarting process
+process[robot_state_publisher-3]: started with pid [80]
+[ERROR] [9.0]: Could not find parameter robot_description on parameter server
+[robot_state_publisher-3] process has died [pid 80, exit code 1, cmd /usr/lib/robot_state_publisher/robot_state_publisher __name:=robot_state_publisher __log:=/w/ros_home/log/abc/robot_state_publisher-3.log].
+'''
+
+
+def test_a_required_nodes_death_is_roslaunchs_banner_with_its_exit():
+    (dead,) = logs.deaths([('logs/command-0.log', REQUIRED_DEATH)])
+    assert (dead['node'], dead['code'], dead['required']) == ('dog-5', 1, True)
+    assert dead['cmd'].startswith('/w/src/scripts/dog.py __name:=dog')
+    assert dead['output'].endswith('RuntimeError: the dog is tired')
+    # one that ended cleanly still ended the launch; one without an exit code is said so
+    clean = REQUIRED_DEATH.replace('process has died [pid 88, exit code 1, cmd /w/src/scripts/'
+                                   'dog.py __name:=dog __log:=/w/ros_home/log/abc/dog-5.log].',
+                                   'process has finished cleanly')
+    assert [(d['code'], d['required']) for d in logs.deaths([('l', clean)])] == [(0, True)]
+    bare = REQUIRED_DEATH.replace('died [pid 88, exit code 1, cmd', 'died without exit code '
+                                  '[pid 88, cmd')
+    assert [(d['code'], d['exit']) for d in logs.deaths([('l', bare)])] == [(None, '?')]
+
+
+def test_a_respawned_node_is_noted_once_with_how_often_it_died():
+    (dead,) = logs.deaths([('logs/command-0.log', RESPAWNED)])
+    assert (dead['node'], dead['deaths'], dead['restarted'], dead['required']) == (
+        'robot_state_publisher-3', 3, 2, False)
+    assert 'Could not find parameter robot_description' in dead['output']
+
+
+def test_the_runner_sees_a_required_death_and_nothing_else(tmp_path):
+    """Read as the logs grow, each byte once: a banner cut between two looks is found."""
     (tmp_path / 'logs').mkdir()
-    (tmp_path / 'logs' / 'command-0.log').write_text(ROSLAUNCH_MISSING)
-    assert not logs.student_node_died(str(tmp_path))
-    (tmp_path / 'logs' / 'command-1.log').write_text(PY_CRASH)
-    assert logs.student_node_died(str(tmp_path))
+    watch = logs.RequiredWatch(str(tmp_path))
+    assert watch.death() is None
+    (tmp_path / 'logs' / 'command-0.log').write_text(ROSLAUNCH_MISSING + PY_CRASH + RESPAWNED)
+    assert watch.death() is None          # deaths roslaunch runs on after
+    cut = REQUIRED_DEATH.index('[dog-5] has')
+    with open(str(tmp_path / 'logs' / 'command-1.log'), 'w') as f:
+        f.write(REQUIRED_DEATH[:cut])
+        f.flush()
+        assert watch.death() is None
+        f.write(REQUIRED_DEATH[cut:])
+    assert watch.death() == 'dog-5'
 
 
 HANDSHAKE = '''[rospy.internal][ERROR] 2026-11-27 05:13:57,820: Inbound TCP/IP connection failed:

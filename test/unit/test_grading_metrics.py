@@ -133,13 +133,23 @@ def test_verdicts_tell_causes_apart(tmp_path):
     crash = ('Traceback (most recent call last):\n  File "dog.py", line 4\n'
              'RuntimeError: the dog has no legs\n'
              '[dog-5] process has died [pid 88, exit code 1, cmd /w/dog.py __name:=dog].\n')
+    # roslaunch runs on without it: judged by the checks, the death named, its traceback counted
     got = judge('crash', {'logs/command-0.log': crash}, states=dog_states(until=5))
-    assert (got['verdict'], got['reason']) == ('crashed', 'dog-5 died (exit code 1): '
-                                                          'RuntimeError: the dog has no legs')
+    assert got['verdict'] == 'failed_checks', got
+    assert got['reason'].endswith('; dog-5 died (exit code 1): RuntimeError: the dog has no legs')
+    assert {c['name']: c['value'] for c in got['checks']}['no Python error'] == 1
+    # required="true": roslaunch shut its launch down, and the run ended there
+    required = crash.replace('[dog-5] process has died', '=' * 80 + 'REQUIRED process [dog-5] '
+                             'has died!\nprocess has died')
+    got = judge('required', {'logs/command-0.log': required}, states=dog_states(until=5),
+                ended_by='required_node_died', ended_at=5.0, required_node='dog-5')
+    assert (got['verdict'], got['reason']) == (
+        'crashed', 'dog-5 died (exit code 1): RuntimeError: the dog has no legs; it was '
+                   'required="true": roslaunch shut its launch down at 5 of 200 simulated s')
+    assert got['died'][0]['required'] is True
     # judged on the truth until the crash, so that it keeps the points it earned (scores)
     assert got['checks_until'] == 'crashed' and [c['name'] for c in got['checks']] == [
         c['name'] for c in DOG['checks']]
-    assert {c['name']: c['value'] for c in got['checks']}['no Python error'] == 1
     sim = '[gazebo-1] process has died [pid 9, exit code 1, cmd /r/scripts/simulator.py x].\n'
     got = judge('sim', {'logs/command-0.log': sim}, states=dog_states(until=5))
     assert got['verdict'] == 'grader_error' and 'the simulator died' in got['reason']

@@ -70,8 +70,11 @@ def test_a_page_says_why_a_node_died_and_which_could_not_start(tmp_path):
              'node_logs': [{'log': 'ros_home/log/abc/viewer-3.log', 'tail': 'init_node'}]}]
     missing = [{'command': 'roslaunch p a.launch', 'log': 'logs/command-0.log',
                 'line': 'ERROR: cannot launch node of type [p/ghost.py]: Cannot locate'}]
+    respawned = [{'node': 'robot_state_publisher-3', 'code': 1, 'exit': '1', 'cmd': 'rsp',
+                  'log': 'logs/command-0.log', 'deaths': 4, 'restarted': 3, 'required': False},
+                 dict(died[0], node='dog-5', code=1, exit='1', abort='', required=True)]
     write_run(runs, 'cat', 'cat', 'crashed', 0.0, died=died)
-    write_run(runs, 'dan', 'dan', 'passed', 1.0, launch_errors=missing)
+    write_run(runs, 'dan', 'dan', 'passed', 1.0, launch_errors=missing, died=respawned)
     write_run(runs, 'eve', 'eve', 'passed', 1.0)
     summaries = report.write(str(tmp_path), DOG)
     cat = (tmp_path / 'pages' / 'cat.html').read_text()
@@ -81,6 +84,11 @@ def test_a_page_says_why_a_node_died_and_which_could_not_start(tmp_path):
     dan = (tmp_path / 'pages' / 'dan.html').read_text()
     assert '<h2>Nodes that could not start (1)</h2>' in dan
     assert '<code>roslaunch p a.launch</code>: ERROR: cannot launch node of type' in dan
+    # what roslaunch did about each death: restarted it, or shut its launch down
+    assert '<h3>robot_state_publisher-3: exit code 1 (died 4 times; roslaunch restarted it 3 ' \
+        'times (respawn=&quot;true&quot;))</h3>' in dan
+    assert '<h3>dog-5: exit code 1 (required=&quot;true&quot;: roslaunch shut its launch ' \
+        'down)</h3>' in dan
     eve = (tmp_path / 'pages' / 'eve.html').read_text()
     assert 'Nodes that could not start' not in eve and 'Nodes that died' not in eve
     # and in report.json, for a program to read

@@ -13,14 +13,17 @@ import html
 import os
 import re
 
-from exp_assignment2.grading import report_judged, report_packages, report_releases
+from exp_assignment2.grading import report_failures, report_judged, report_packages, \
+    report_releases, verdicts
 from exp_assignment2.grading.report_marks import _number
 
 WORDS = {
     'passed': 'Your package ran and did everything the checks look for.',
     'failed_checks': 'Your package ran, but some checks were not met.',
-    'crashed': 'Your package ran, then a part of it stopped before the end. Its checks were '
-               'judged on what the robot did until then, and keep the points they earned.',
+    'crashed': 'Your package ran, then it ended before the end of the run (a required node '
+               'died, or every command had ended, or it broke a limit) before its checks '
+               'were met. Its checks were judged on what the robot did until then, and keep '
+               'the points they earned.',
     'timed_out': 'Your package did not finish in time. Its checks were judged on what the '
                  'robot did until then, and keep the points they earned.',
     'not_started': 'Your package was built, but a command that starts it did not start: '
@@ -107,9 +110,10 @@ def to_fix(summary, run, clean):
             _e(clean(e.get('command'))), _e(clean(e.get('line')))))
     errors = run.get('errors') or []
     for d in run.get('died') or []:
-        said = next((e['summary'] for e in errors if e['source'] == d.get('log')), '')
-        items.append('The node <code>%s</code> died (exit code %s)%s' % (
-            _e(d['node']), _e(d.get('exit', d.get('code'))),
+        said = '' if d.get('abort') else verdicts.why_it_died(errors, d)
+        did = report_failures.how_it_ended(d)
+        items.append('The node <code>%s</code> died (exit code %s%s)%s' % (
+            _e(d['node']), _e(d.get('exit', d.get('code'))), '; ' + _e(did) if did else '',
             ': <pre>%s</pre>' % _e(clean(d['abort'])) if d.get('abort') else
             ': <b>%s</b>' % _e(clean(said)) if said else ''))
     if errors:

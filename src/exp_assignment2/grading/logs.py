@@ -2,18 +2,22 @@
 
 * :func:`tracebacks`, :func:`python_errors`: Python's tracebacks, each once;
 * :func:`deaths`: roslaunch's ``[NODE] process has died [pid, exit code, cmd]``
-  lines, each with what the node said last: the lines of its output before
-  it, its own log (``ros_home/log/RUN/NODE.log``, and ``NODE-stdout.log``
-  for ``output="log"``), and for an abort the Qt or C++ message before it
+  lines, and its ``REQUIRED process [NODE] has died!`` (a ``required="true"``
+  node: roslaunch then shuts its launch down), each with what the node said
+  last: the lines of its output before it, its own log
+  (``ros_home/log/RUN/NODE.log``, and ``NODE-stdout.log`` for
+  ``output="log"``), and for an abort the Qt or C++ message before it
   (:func:`abort_message`); exit codes that are signals named
-  (:func:`exit_name`);
+  (:func:`exit_name`); a node roslaunch restarts (``respawn="true"``) once,
+  with how many times it died;
 * :func:`cannot_launch`: roslaunch's ``ERROR: cannot launch node of type``,
   a node of a launch that could not be started (roslaunch runs the rest);
 * :func:`started_nothing`: the line of a command's output that says the
   command started nothing (``RLException``, ``Resource not found``,
   ``rosrun``'s and ``rospack``'s errors);
-* :func:`student_node_died`: the runner's look, while a run goes, for a
-  death of a student's node.
+* :class:`RequiredWatch`: the runner's look, while a run goes, for roslaunch's
+  ``REQUIRED process [NODE] has died!`` (any other node's death ends nothing:
+  roslaunch runs on, and so does the run).
 
 Logs are read up to the size they had when the run was ended (``sizes``):
 what a node says while it is being stopped is not its crash.
@@ -29,6 +33,12 @@ TAIL = 15                        # lines of a dead node's output shown
 
 DIED = re.compile(r'^\[(?P<node>[^\]]+)\] process has died \[pid \d+, exit code (?P<code>-?\d+), '
                   r'cmd (?P<cmd>.*?)\]\.?$', re.M)
+# a required node's death: the banner, then the exit's description on the next line
+REQUIRED = re.compile(r'REQUIRED process \[(?P<node>[^\]]+)\] has died!')
+EXIT_DESCRIPTION = re.compile(r'^process has (?:died \[pid \d+, exit code (?P<code>-?\d+), '
+                              r'cmd (?P<cmd>.*?)\]\.?|died without exit code \[pid \d+, '
+                              r'cmd (?P<bare_cmd>.*?)\]\.?|finished cleanly)$')
+RESTARTING = re.compile(r'^\[(?P<node>[^\]]+)\] restarting process$', re.M)
 CANNOT_LAUNCH = re.compile(
     r'^ERROR: cannot launch node of type \[(?P<type>[^\]]+)\]: ?(?P<why>.*)$', re.M)
 STARTED_NOTHING = re.compile(r'^(RLException: .*|Resource not found: .*|\[rosrun\] .*|'
@@ -192,21 +202,53 @@ def death(node, code, cmd, where, output_lines, work='', sizes=None):
             'output': '\n'.join(output_lines[-TAIL:])[-4000:],
             'node_logs': [{'log': rel, 'tail': '\n'.join(last_lines(text))[-4000:]}
                           for rel, text in own],
-            'abort': abort_message(output_lines[-40:] + own_lines) if code < 0 or code == 134
-            else ''}
+            'abort': abort_message(output_lines[-40:] + own_lines)
+            if code is not None and (code < 0 or code == 134) else ''}
+
+
+def _died_at(lines, i):
+    """(node, exit code, cmd, required?) of roslaunch's death said at line i, or None."""
+    match = DIED.match(lines[i])
+    if match:
+        return match.group('node'), int(match.group('code')), match.group('cmd'), False
+    match = REQUIRED.search(lines[i])
+    if not match:
+        return None
+    said = EXIT_DESCRIPTION.match(lines[i + 1].strip()) if i + 1 < len(lines) else None
+    if said is None or said.group('bare_cmd') is not None:     # no exit code known
+        return match.group('node'), None, said.group('bare_cmd') if said else '', True
+    code = int(said.group('code')) if said.group('code') is not None else 0
+    return match.group('node'), code, said.group('cmd') or '', True
 
 
 def deaths(logs, work='', sizes=None):
-    """[death] for every ``process has died`` line of the logs."""
+    """[death] for every node roslaunch said has died (``process has died``,
+    ``REQUIRED process ... has died!``: ``required`` True, an exit code 0 too):
+    a node roslaunch restarted (``respawn="true"``) once, with ``deaths``
+    (how many times it died) and ``restarted`` (how many times roslaunch
+    started it again), its first death's output kept."""
     found = []
     for rel, text in logs:
         lines = text.splitlines()
-        for i, line in enumerate(lines):
-            match = DIED.match(line)
-            if match:
-                before = [l for l in lines[max(0, i - 80):i] if l.strip()]
-                found.append(death(match.group('node'), int(match.group('code')),
-                                   match.group('cmd'), rel, before, work, sizes))
+        restarts = {}
+        for match in RESTARTING.finditer(text):
+            restarts[match.group('node')] = restarts.get(match.group('node'), 0) + 1
+        respawned = {}
+        for i in range(len(lines)):
+            said = _died_at(lines, i)
+            if said is None:
+                continue
+            node, code, cmd, required = said
+            if node in respawned:
+                respawned[node]['deaths'] += 1
+                continue
+            before = [l for l in lines[max(0, i - 80):i] if l.strip()]
+            dead = death(node, code, cmd, rel, before, work, sizes)
+            dead['required'] = required
+            if restarts.get(node):
+                dead.update(deaths=1, restarted=restarts[node])
+                respawned[node] = dead
+            found.append(dead)
     return found
 
 
@@ -227,16 +269,33 @@ def started_nothing(text):
     return match.group(0).strip()[:300] if match else None
 
 
-def student_node_died(work):
-    """Has a node other than the simulator died with an error (the commands' logs, now)?"""
-    logs = os.path.join(work, 'logs')
-    try:
-        names = [n for n in os.listdir(logs) if n.startswith('command-')]
-    except OSError:
-        return False
-    for name in names:
-        text = read_log(work, os.path.join('logs', name), {})
-        if any(int(m.group('code')) != 0 and not is_simulator(m.group('cmd'))
-               for m in DIED.finditer(text)):
-            return True
-    return False
+class RequiredWatch(object):
+    """roslaunch's ``REQUIRED process [NODE] has died!`` in the commands' logs
+    (``logs/command-N.log``), looked for as they grow: each byte read once."""
+
+    CHUNK = 4 * 1024 * 1024      # bytes read from a log at one look
+
+    def __init__(self, work):
+        self.logs = os.path.join(work, 'logs')
+        self._read, self._tails = {}, {}
+
+    def death(self):
+        """The name roslaunch gives the first required node that died, or None."""
+        try:
+            names = sorted(n for n in os.listdir(self.logs) if COMMAND_LOG.match('logs/' + n))
+        except OSError:
+            return None
+        for name in names:
+            try:
+                with open(os.path.join(self.logs, name), 'rb') as f:
+                    f.seek(self._read.get(name, 0))
+                    chunk = f.read(self.CHUNK)
+            except OSError:
+                continue
+            self._read[name] = self._read.get(name, 0) + len(chunk)
+            text = self._tails.get(name, '') + chunk.decode(errors='replace')
+            match = REQUIRED.search(ANSI.sub('', text))
+            if match:
+                return match.group('node')
+            self._tails[name] = text[-400:]      # a line cut between two looks
+        return None

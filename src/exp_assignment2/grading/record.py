@@ -16,11 +16,13 @@ keys, those of a run that did not run left out:
 * how it went: ``started``, ``finished``, ``events`` (the driver's), ``build``
   (the build's outcome as the driver sent it: ``rc`` and ``error`` with
   ``file``, ``line``, ``message``), ``ended_by`` (why the run was ended:
-  ``duration``, ``node_died``, ``all_exited``, ``wall_limit``,
-  ``build_limit``, ``build_failed``, ``no_simulator``, ``disk_limit``,
-  ``cancelled``, ``driver_exit`` when its driver ended first, ``not_run``
-  when it never started: not unpacked, no sandbox, refused or lost by the
-  cluster), ``log_sizes``, ``truth``,
+  :mod:`exp_assignment2.grading.run_end`'s ``duration``,
+  ``required_node_died``, ``all_exited``, ``wall_limit``, ``build_limit``,
+  ``no_simulator``, ``disk_limit``, ``cancelled``; ``build_failed``,
+  ``driver_exit`` when its driver ended first, ``not_run`` when it never
+  started: not unpacked, no sandbox, refused or lost by the cluster),
+  ``ended_at`` (the simulated s then), ``required_node`` (roslaunch's name of
+  the required node whose death ended it), ``log_sizes``, ``truth``,
   ``real_time_factor``, ``wall_time``, ``cpu_s``, ``memory_mb``,
   ``peak_memory_mb``, ``oom``, ``all_gone``, ``sandbox_exit``, ``cut``;
 * the verdict (:mod:`exp_assignment2.grading.verdicts`): ``verdict``,

@@ -18,16 +18,31 @@ def launch_errors_section(run):
                     _e(e.get('command')), _e(e.get('line'))) for e in errors))]
 
 
+def how_it_ended(death):
+    """What roslaunch did about a death, in words ('' when it ran on)."""
+    if death.get('required'):
+        return 'required="true": roslaunch shut its launch down'
+    if death.get('restarted'):
+        return 'died %d times; roslaunch restarted it %d times (respawn="true")' % (
+            death.get('deaths', 1), death['restarted'])
+    return ''
+
+
 def deaths_section(run):
-    """Each node that died: its exit (a signal named), the message of its
-    abort, the last lines of its output and of its own log."""
+    """Each node that died: its exit (a signal named), what roslaunch did
+    about it, the message of its abort, the last lines of its output and of
+    its own log."""
     died = run.get('died') or []
     if not died:
         return []
-    parts = ['<h2>Nodes that died (%d)</h2>' % len(died)]
+    parts = ['<h2>Nodes that died (%d)</h2><p>roslaunch runs on when a node dies, unless it is '
+             'required="true", and restarts one with respawn="true": so did the run.</p>'
+             % len(died)]
     for d in died:
-        parts.append('<h3>%s: exit code %s</h3><p>said in %s</p>' % (
-            _e(d['node']), _e(d.get('exit', d['code'])), _e(d['log'])))
+        did = how_it_ended(d)
+        parts.append('<h3>%s: exit code %s%s</h3><p>said in %s</p>' % (
+            _e(d['node']), _e(d.get('exit', d['code'])), ' (%s)' % _e(did) if did else '',
+            _e(d['log'])))
         if d.get('abort'):
             parts.append('<p>why it aborted:</p><pre class="abort">%s</pre>' % _e(d['abort']))
         if d.get('output'):

@@ -13,7 +13,7 @@ import subprocess
 import threading
 import time
 
-from exp_assignment2.grading import build_deps, cpu, logs, record, verdicts
+from exp_assignment2.grading import build_deps, cpu, logs, record, run_end, verdicts
 from exp_assignment2.grading import packages as packages_
 from exp_assignment2.grading.paths import INSIDE, REPO
 from exp_assignment2.grading.run_files import directory_size, log_sizes, waits_on_wall_clock
@@ -25,7 +25,6 @@ from exp_assignment2.launch_surface.viewer import FRAME_RATE_ENV as VIEWER_FRAME
 from exp_assignment2.sim.ground_truth import SOCKET_ENV, TOPICS_ENV
 from exp_assignment2.sim.releases import ENV as RELEASE_ENV
 
-BUILD_LIMIT = 900.0          # wall s for a build
 START_SLACK = 120.0          # wall s on top of the duration: set-up, starting, ending
 WORK_LIMIT = 2 * 1024 ** 3   # bytes the work directory may hold
 # the environment a run starts with (the sandbox's is cleared)
@@ -196,7 +195,8 @@ class Run(object):
             if self.settings.real_time_factor != 1.0 else '')
 
     def _monitor(self, box, truth, plan, rtf, result):
-        """Start the driver in the sandbox and watch until the run is over."""
+        """Start the driver in the sandbox and watch until the run is over
+        (why it ends: :func:`~exp_assignment2.grading.run_end.end_reason`)."""
         events_path = os.path.join(self.record, 'events.jsonl')
         proc = box.start(['/usr/bin/python3', INSIDE, plan], stdout=subprocess.PIPE)
         events = self.events
@@ -204,9 +204,11 @@ class Run(object):
                                   args=(proc, events, events_path, self._news), daemon=True)
         reader.start()
         duration = self.settings.duration
-        wall_limit = duration / (rtf if rtf > 0 else 1.0) * 1.5 + START_SLACK
         t0 = time.monotonic()
-        run_start = None
+        facts = run_end.RunFacts(duration, duration / (rtf if rtf > 0 else 1.0) * 1.5 +
+                                 START_SLACK, t0, len(self.spec.commands),
+                                 self.settings.profile['delay'])
+        required = logs.RequiredWatch(self.work)
         ending = None
         self.state = 'building'
         last_size_check = 0.0
@@ -214,42 +216,33 @@ class Run(object):
             self._news.wait(0.25)       # a driver event, or the limits' next look
             self._news.clear()
             now = time.monotonic()
-            kinds = [e.get('event') for e in events]
-            if 'built' in kinds and run_start is None:
-                run_start = now
-                self.state = 'running'
-                built = [e for e in events if e.get('event') == 'built'][0]
-                if built.get('rc') != 0:
-                    result['ended_by'] = 'build_failed'
-                    break
+            if facts.built_at is None:
+                built = next((e for e in events if e.get('event') == 'built'), None)
+                if built is not None:
+                    facts.built_at = now
+                    self.state = 'running'
+                    if built.get('rc') != 0:
+                        result['ended_by'] = 'build_failed'
+                        break
             if ending:
                 if now - ending[1] > 40:        # the driver did not end its commands
                     break
                 continue
-            reason = None
-            if self.stop_event.is_set():
-                reason = 'cancelled'
-            elif run_start is None and now - t0 > BUILD_LIMIT:
-                reason = 'build_limit'
-            elif truth.latest and truth.latest[0] >= duration:
-                reason = 'duration'
-            elif run_start is not None and now - run_start > wall_limit:
-                reason = 'wall_limit'
-            elif run_start is not None and self._all_exited(events) and (
-                    truth.latest is None or now - truth.latest[1] > 10):
-                reason = 'all_exited'
-            elif run_start is not None and truth.latest is None and \
-                    now - run_start > 90 + len(self.spec.commands) * self.settings.profile['delay']:
-                reason = 'no_simulator'
-            elif now - last_size_check > 5:
+            facts.cancelled = self.stop_event.is_set()
+            facts.truth = truth.latest
+            facts.all_exited = self._all_exited(events)
+            if facts.built_at is not None and not facts.required_died:
+                facts.required_died = required.death()
+            if now - last_size_check > 5:
                 last_size_check = now
-                if directory_size(self.work) > WORK_LIMIT:
-                    reason = 'disk_limit'
-                elif logs.student_node_died(self.work):
-                    reason = 'node_died'      # the verdict is 'crashed' whatever comes
+                facts.over_disk = directory_size(self.work) > WORK_LIMIT
+            reason = run_end.end_reason(facts, now)
             if reason:
                 ending = (reason, now)
                 result['ended_by'] = reason
+                result['ended_at'] = truth.latest[0] if truth.latest else 0.0   # simulated s
+                if reason == 'required_node_died':
+                    result['required_node'] = facts.required_died
                 result['cpu_s'], result['memory_mb'] = cpu.snapshot(box.groups.pids())
                 result['log_sizes'] = log_sizes(self.work)
                 self.state = 'ending'

@@ -1,10 +1,11 @@
 """A run's verdict, from what was seen outside the student's code (no ROS).
 
-What was seen is gathered once (:func:`gather`: a :class:`Seen` from the
-run's record, its logs through :mod:`exp_assignment2.grading.logs`, and its
-ground truth); the verdict is the first rule of :data:`RULES` that holds,
-as the CARLA leaderboard's ``FAILURE_MESSAGES`` table. The table's order is
-the precedence (docs/grading.md, "Verdicts", lists it row by row):
+What was seen is gathered once (:func:`~exp_assignment2.grading.seen.gather`:
+a :class:`~exp_assignment2.grading.seen.Seen` from the run's record, its logs
+through :mod:`exp_assignment2.grading.logs`, and its ground truth); the
+verdict is the first rule of :data:`RULES` that holds, as the CARLA
+leaderboard's ``FAILURE_MESSAGES`` table. The table's order is the precedence
+(docs/grading.md, "Verdicts", lists it row by row):
 
 1. ``grader_error``: the run's display could not be made (nothing of the student's ran);
 2. ``grader_error``: the sandbox did not start (the driver never said the build's end);
@@ -17,86 +18,41 @@ the precedence (docs/grading.md, "Verdicts", lists it row by row):
    program);
 6. ``not_started``: the simulator never reported, and a node of a launch could
    not be started (its roslaunch's ``cannot launch node`` line);
-7. ``crashed``: the grader's driver in the sandbox was killed from inside it;
-8. ``crashed``: the run used more memory than its limit;
-9. ``crashed``: the run wrote more than its disk limit;
-10. ``crashed``: a node of the student's died before the end (which, its exit
-   code named, its traceback or the Qt/C++ message of its abort);
-11. ``grader_error``: the simulator never reported its ground truth;
-12. ``timed_out``: the build ran past its limit;
-13. ``timed_out``: the run did not reach its simulated duration within its
+7. ``crashed``: the grader's driver in the sandbox was killed from inside it,
+8. ``crashed``: the run used more memory than its limit,
+9. ``crashed``: the run wrote more than its disk limit,
+10. ``crashed``: a ``required="true"`` node died, and roslaunch shut its
+    launch down (``REQUIRED process [NODE] has died!``),
+11. ``crashed``: every command had ended (the system was gone) before the
+    duration, the ground truth having come,
+    each of 7-11 only when some check was not met on the ground truth until
+    then (a system that did its work and then ended is judged by its checks);
+12. ``grader_error``: the simulator never reported its ground truth;
+13. ``timed_out``: the build ran past its limit;
+14. ``timed_out``: the run did not reach its simulated duration within its
     wall-clock limit;
-14. ``failed_checks``: some check of the profile failed;
-15. ``passed``: every check that could be run passed (a check whose robot, head
-    or ball could not be told is not run: :mod:`.roles`; the reason names it).
+15. ``failed_checks``: some check of the profile failed (the nodes that died
+    named after them);
+16. ``passed``: every check that could be run passed (a check whose robot, head
+    or ball could not be told is not run: :mod:`.roles`; the reason names it,
+    and the nodes that died).
 
-A node of a launch that cannot be started is not a verdict by itself
-(roslaunch starts the rest, and so the student saw it run): it is kept in
-``launch_errors``, attributed to the command whose output holds it, and
-the verdict follows what the robot did.
+roslaunch's rules, as on the student's desktop: a node of a launch that
+cannot be started, or that dies, is not a verdict by itself (roslaunch
+starts the rest and runs on; it restarts a ``respawn="true"`` node): the
+death is kept in ``died``, its traceback counts as a Python error, and the
+verdict follows the checks. A node that cannot be started is kept in
+``launch_errors``, attributed to the command whose output holds it.
 """
 import collections
 import os
 
 from exp_assignment2.grading import logs as logs_
-from exp_assignment2.grading import metrics
-from exp_assignment2.grading import roles as roles_
+from exp_assignment2.grading.seen import Seen, gather
 
+__all__ = ['RULES', 'Seen', 'VERDICTS', 'decide', 'gather', 'judge', 'why_it_died']
 VERDICTS = ('passed', 'failed_checks', 'crashed', 'timed_out', 'not_started', 'not_built',
             'grader_error')
-
-
-class Seen(object):
-    """The facts a verdict is decided on, gathered once (or made by hand in a test)."""
-
-    def __init__(self, built=True, build_rc=0, build_error=None, build_log_line='',
-                 ended_by='duration', sandbox_exit=0, driver_ended=True, oom=False,
-                 states=0, sim_time=0.0, duration=200.0, memory_limit_mb=0, died=(),
-                 errors=(), started_nothing=(), launch_errors=(), checks=None,
-                 display_error=None):
-        self.display_error = display_error       # the driver's, when it made no display
-        self.built, self.build_rc, self.build_error = built, build_rc, build_error
-        self.build_log_line = build_log_line
-        self.ended_by, self.sandbox_exit, self.driver_ended = ended_by, sandbox_exit, driver_ended
-        self.oom, self.states, self.sim_time, self.duration = oom, states, sim_time, duration
-        self.memory_limit_mb = memory_limit_mb
-        self.died, self.errors = list(died), list(errors)
-        self.started_nothing, self.launch_errors = list(started_nothing), list(launch_errors)
-        self._checks = checks      # a list, or a function judging (roles, checks) when asked
-        self._roles = None
-
-    def _judge(self):
-        if callable(self._checks):
-            self._roles, self._checks = self._checks()
-
-    @property
-    def checks(self):
-        self._judge()
-        return self._checks
-
-    @property
-    def roles(self):
-        """The :class:`~.roles.Roles` the checks judged (None before any ground truth)."""
-        self._judge()
-        return self._roles
-
-    @property
-    def ran(self):
-        """The package was built and its commands were started."""
-        return self.built and self.build_rc == 0
-
-    @property
-    def killed_from_inside(self):
-        """The driver ended without ending its commands, and the grader did not end it."""
-        return self.ran and not self.driver_ended and self.ended_by == 'driver_exit'
-
-    @property
-    def simulator_deaths(self):
-        return [d for d in self.died if logs_.is_simulator(d)]
-
-    @property
-    def student_deaths(self):
-        return [d for d in self.died if d['code'] != 0 and not logs_.is_simulator(d)]
 
 
 Rule = collections.namedtuple('Rule', 'verdict name holds reason')
@@ -117,27 +73,63 @@ def _build_reason(s):
     return '%s%s' % (where + ': ' if where else '', message)
 
 
-def _death_reason(s):
-    d = s.student_deaths[0]
-    error = next((e for e in s.errors if e['source'] == d['log'] or
-                  d['node'].rsplit('-', 1)[0] in e['source']), s.errors[0] if s.errors else None)
-    why = error['summary'] if error else (d.get('abort') or '').split('\n')[0]
-    return '%s died (exit code %s)%s' % (d['node'], logs_.exit_name(d['code']),
-                                         ': ' + why if why else '')
+def why_it_died(errors, d):
+    """What a dead node said last: its traceback (in its own log, in the output
+    before its death, in its command's log), else its abort's message."""
+    own = {l['log'] for l in d.get('node_logs') or ()}
+    for fits in (lambda e: e['source'] in own or
+                 os.path.basename(e['source']).startswith(d['node'] + '.'),
+                 lambda e: e['summary'] in (d.get('output') or ''),
+                 lambda e: e['source'] == d['log']):
+        error = next((e for e in errors if fits(e)), None)
+        if error:
+            return error['summary']
+    return (d.get('abort') or '').split('\n')[0]
 
 
-def _failed_names(s):
-    return [c['name'] for c in s.checks or () if c['passed'] is False]
+def _death(s, d):
+    """'NODE died (exit code N): why', with how often when roslaunch restarted it."""
+    times = ' %d times' % d['deaths'] if d.get('deaths', 1) > 1 else ''
+    again = ', restarted by roslaunch (respawn)' if d.get('restarted') else ''
+    why = why_it_died(s.errors, d)
+    return '%s died%s (exit code %s)%s%s' % (d['node'], times, logs_.exit_name(d['code']),
+                                             again, ': ' + why if why else '')
+
+
+def _deaths_said(s, shown=2):
+    """The student's nodes that died, for a verdict's reason ('' when none)."""
+    deaths = s.student_deaths
+    said = '; '.join(_death(s, d) for d in deaths[:shown])
+    more = len(deaths) - shown
+    return said + ('; and %d other node%s' % (more, 's' if more > 1 else '') if more > 0 else '')
+
+
+def _at(s):
+    return 'at %.0f of %.0f simulated s' % (s.ended_at, s.duration)
+
+
+def _required_reason(s):
+    d = next((d for d in s.student_deaths if d.get('required')), None)
+    said = _death(s, d) if d else 'a required node died'
+    return '%s; it was required="true": roslaunch shut its launch down %s' % (said, _at(s))
+
+
+def _all_ended_reason(s):
+    deaths = _deaths_said(s)
+    return 'every command had ended %s%s' % (_at(s), ' (%s)' % deaths if deaths else '')
 
 
 def _checks_reason(s):
-    """Which checks failed, and which were not run (their role could not be told)."""
+    """Which checks failed, which were not run (their role could not be told),
+    and the student's nodes that died meanwhile (roslaunch ran on)."""
     parts = []
-    if _failed_names(s):
-        parts.append('failed: ' + ', '.join(_failed_names(s)))
+    if s.failed:
+        parts.append('failed: ' + ', '.join(s.failed))
     unjudged = [c['name'] for c in s.checks or () if c['passed'] is None]
     if unjudged:
         parts.append('not judged: ' + ', '.join(unjudged))
+    if _deaths_said(s):
+        parts.append(_deaths_said(s))
     return '; '.join(parts)
 
 
@@ -159,15 +151,20 @@ RULES = (
          lambda s: s.ran and not s.states and bool(s.launch_errors),
          lambda s: '%s: %s' % (s.launch_errors[0]['command'], s.launch_errors[0]['line'])),
     Rule('crashed', 'the grader\'s processes killed from inside',
-         lambda s: s.killed_from_inside,
+         lambda s: s.ended_early(lambda s: s.killed_from_inside),
          lambda s: 'the run\'s processes were killed from inside its sandbox: the grader\'s '
                    'driver there got a signal it was not sent by the grader (exit %s)'
                    % s.sandbox_exit),
-    Rule('crashed', 'memory limit', lambda s: s.ran and s.oom,
+    Rule('crashed', 'memory limit', lambda s: s.ended_early(lambda s: s.oom),
          lambda s: 'the run used more than its %d MB of memory' % s.memory_limit_mb),
-    Rule('crashed', 'disk limit', lambda s: s.ran and s.ended_by == 'disk_limit',
+    Rule('crashed', 'disk limit', lambda s: s.ended_early(lambda s: s.ended_by == 'disk_limit'),
          lambda s: 'the run wrote more than its disk limit'),
-    Rule('crashed', 'a node died', lambda s: s.ran and bool(s.student_deaths), _death_reason),
+    Rule('crashed', 'a required node died',
+         lambda s: s.ended_early(lambda s: s.ended_by == 'required_node_died'),
+         _required_reason),
+    Rule('crashed', 'every command ended',
+         lambda s: s.ended_early(lambda s: s.ended_by == 'all_exited' and bool(s.states)),
+         _all_ended_reason),
     Rule('grader_error', 'no ground truth',
          lambda s: s.ran and (not s.states or s.ended_by == 'no_simulator'),
          lambda s: 'the simulator never reported its ground truth'),
@@ -176,7 +173,7 @@ RULES = (
     Rule('timed_out', 'wall-clock limit', lambda s: s.ran and s.ended_by == 'wall_limit',
          lambda s: '%.0f of %.0f simulated s within the wall-clock limit' % (s.sim_time,
                                                                             s.duration)),
-    Rule('failed_checks', 'a check failed', lambda s: bool(_failed_names(s)), _checks_reason),
+    Rule('failed_checks', 'a check failed', lambda s: bool(s.failed), _checks_reason),
     Rule('passed', 'every check that could be run passed', lambda s: True, _checks_reason),
 )
 
@@ -187,89 +184,6 @@ def decide(seen, rules=RULES):
         if rule.holds(seen):
             return rule.verdict, rule.reason(seen)
     raise AssertionError('no rule holds')      # the last one always does
-
-
-def _command_names(result):
-    """{index: command} as the driver said it started them (else as planned)."""
-    names = dict(enumerate(result.get('commands') or []))
-    for event in result.get('events') or []:
-        if event.get('event') in ('started', 'exited') and 'index' in event:
-            names[event['index']] = event.get('command', names.get(event['index']))
-    return names
-
-
-def _command_of(rel, names):
-    index = logs_.command_index(rel)
-    if index is None:
-        return rel or 'a command'
-    return names.get(index, 'command %d' % index)
-
-
-def gather(work, record_dir, result, profile):
-    """The :class:`Seen` of a finished run."""
-    sizes = result.get('log_sizes') or {}
-    run_logs = logs_.run_logs(work, sizes)
-    simulators = logs_.simulator_logs(work, sizes)    # the grader's: not the student's errors
-    events = result.get('events') or []
-    built = next((e for e in events if e.get('event') == 'built'), None)
-    names = _command_names(result)
-    states = (result.get('truth') or {}).get('states') or 0
-    build_log = logs_.read_log(work, 'logs/build.log', {})
-    error = dict(built.get('error') or {}) if built else None
-    if error and error.get('file'):        # as the report has paths: the package's own
-        package = os.path.join(work, 'src') + '/'
-        error['file'] = error['file'].replace(package, '').replace(
-            os.path.dirname(work) + '/', '')
-    seen = Seen(built=built is not None, build_rc=built.get('rc') if built else None,
-                build_error=error, build_log_line=logs_.last_line(build_log),
-                ended_by=result.get('ended_by'), sandbox_exit=result.get('sandbox_exit'),
-                driver_ended=any(e.get('event') in ('stopping', 'ended') for e in events),
-                oom=bool(result.get('oom')), states=states,
-                sim_time=(result.get('truth') or {}).get('sim_time') or 0.0,
-                duration=float(result.get('duration') or profile['duration']),
-                memory_limit_mb=profile['memory_limit_mb'],
-                errors=logs_.python_errors(
-                    [(rel, text) for rel, text in run_logs if rel not in simulators]),
-                display_error=next((e['error'] for e in events if e.get('event') == 'display'
-                                    and e.get('error')), None))
-    if not seen.ran:
-        return seen
-    seen.died = logs_.deaths(run_logs, work, sizes)
-    seen.launch_errors = [{'command': _command_of(rel, names), 'line': line, 'log': rel}
-                          for rel, line in logs_.cannot_launch(run_logs)]
-    texts = dict(run_logs)
-    nothing = []       # (inferred?, index, command, line): said first, then by order
-    for event in events:
-        if event.get('event') != 'exited' or event.get('at_end'):
-            continue
-        index, command = event.get('index', -1), event.get('command')
-        rel = 'logs/command-%d.log' % index
-        text = texts.get(rel) or logs_.read_log(work, rel, sizes)
-        line = logs_.started_nothing(text)
-        if event.get('error'):                 # the driver could not start it
-            nothing.append((0, index, command, event['error'][:300]))
-        elif line:
-            nothing.append((0, index, command, line))
-        elif event.get('rc') not in (0, None) and not states:
-            nothing.append((1, index, command, logs_.last_line(text) or 'exited with code %s'
-                            % logs_.exit_name(event['rc'])))
-        elif event.get('rc') not in (0, None) and not (command or '').startswith('roslaunch '):
-            # a rosrun'd node (roslaunch says its nodes' deaths itself)
-            seen.died.append(logs_.death(command, event['rc'], command, rel,
-                                         logs_.last_lines(text, 80)))
-    for rel, text in run_logs:                 # said by a command not seen to exit before the end
-        index = logs_.command_index(rel)
-        line = logs_.started_nothing(text)
-        if index is not None and line and not any(n[1] == index for n in nothing):
-            nothing.append((0, index, names.get(index, rel), line))
-    seen.started_nothing = [(command, line) for _, _, command, line in sorted(nothing)]
-
-    def judged():
-        trace = metrics.Trace.from_record(record_dir, seen.errors)
-        found = roles_.find(trace, profile)
-        return found, metrics.evaluate(trace, profile, found)
-    seen._checks = judged if states else None
-    return seen
 
 
 def judge(work, record_dir, result, profile):

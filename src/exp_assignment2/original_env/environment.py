@@ -19,7 +19,8 @@ hooks on:
 * PATH: $EXP2_ORIGINAL_BIN (``python``, ``python2``, ``python3``:
   programs/python_launcher.sh, /usr/bin/python3 with Python 2's tab rule for a
   script, also for ``#!/usr/bin/env python`` scripts such as the original's;
-  ``rosrun``: programs/rosrun.py; ``xacro``) and /usr/bin before the rest.
+  ``rosrun``: programs/rosrun.py; ``xacro``; ``gnome-terminal``, ``xterm``,
+  ``konsole``, ``terminator``: programs/terminal.py) and /usr/bin before the rest.
 * EXP2_ORIGINAL_ENV: the one-line summary the shell prints.
 
 Installing Debian's and PyPI's packages is not done here: shell.sh (and
@@ -148,8 +149,14 @@ def environment(package_dir=None, more=(), workspace=None, environ=None, bin_dir
     return env
 
 
+# the terminals students open nodes in (launch-prefix="xterm -e", gnome-terminal in a
+# start script): each a window of Debian's xterm, its output also where it would go
+TERMINALS = ('gnome-terminal', 'xterm', 'konsole', 'terminator', 'x-terminal-emulator')
+
+
 def write_programs(bin_dir, launch_packages_dir):
-    """``python``, ``python2``, ``python3``, ``rosrun`` and ``xacro`` in ``bin_dir``.
+    """``python``, ``python2``, ``python3``, ``rosrun``, ``xacro`` and the
+    terminals (:data:`TERMINALS`) in ``bin_dir``.
 
     The original's scripts start with "#!/usr/bin/env python": Debian has no
     "python", and another one later on PATH could not import Debian's rospy.
@@ -163,10 +170,14 @@ def write_programs(bin_dir, launch_packages_dir):
     executable file in the package would be one catkin does not install.
     ``xacro`` is the stand-in package's, as ROS's is (command="xacro ..." in a
     launch file), not PyPI's script, whose load_yaml fails under PyYAML 6.
+    The terminals are programs/terminal.py: the command in an xterm window on
+    the display, its output also on the opener's standard output (roslaunch's
+    screen, a node's log), gnome-terminal's arguments understood.
     """
     os.makedirs(bin_dir, exist_ok=True)
-    for name, source in (('python', 'python_launcher.sh'), ('python2', 'python_launcher.sh'),
-                         ('python3', 'python_launcher.sh'), ('rosrun', 'rosrun.py')):
+    programs = [('python', 'python_launcher.sh'), ('python2', 'python_launcher.sh'),
+                ('python3', 'python_launcher.sh'), ('rosrun', 'rosrun.py')]
+    for name, source in programs + [(name, 'terminal.py') for name in TERMINALS]:
         scratch = os.path.join(bin_dir, '.%s.%d' % (name, os.getpid()))
         shutil.copyfile(os.path.join(PROGRAMS, source), scratch)
         os.chmod(scratch, 0o755)

@@ -1,0 +1,80 @@
+"""Why a run ends now (exp_assignment2.grading.run_end): each reason alone on
+hand-made facts and a hand-turned clock, then their precedence, then
+roslaunch's rule that no death but a required node's ends a run."""
+import pytest
+
+from exp_assignment2.grading.run_end import (BUILD_LIMIT, SIMULATOR_WAIT, TRUTH_QUIET,
+                                             RunFacts, end_reason)
+
+T0 = 1000.0         # the clock when the run started
+BUILT = T0 + 20.0   # and when the driver said its build ended
+
+
+def facts(**known):
+    """A 30 s run at 2x (a wall limit of 142.5 s), two commands 5 s apart, built at BUILT."""
+    f = RunFacts(30.0, 30.0 / 2 * 1.5 + 120, T0, commands=2, delay=5.0)
+    f.built_at = BUILT
+    for name, value in known.items():
+        setattr(f, name, value)
+    return f
+
+
+def test_a_run_going_well_goes_on():
+    f = facts(truth=(12.0, BUILT + 30.0))
+    assert end_reason(f, BUILT + 31.0) is None
+
+
+def test_the_build_has_its_own_limit():
+    f = facts(built_at=None)
+    assert end_reason(f, T0 + BUILD_LIMIT) is None
+    assert end_reason(f, T0 + BUILD_LIMIT + 0.1) == 'build_limit'
+    # nothing but the build is looked at before it ends
+    assert end_reason(facts(built_at=None, all_exited=True, over_disk=True), T0 + 1) is None
+
+
+@pytest.mark.parametrize('known,now,reason', [
+    (dict(cancelled=True), BUILT + 1, 'cancelled'),
+    (dict(truth=(30.0, BUILT + 20)), BUILT + 20, 'duration'),
+    (dict(truth=(4.0, BUILT + 10), required_died='dog-5'), BUILT + 10, 'required_node_died'),
+    (dict(truth=(20.0, BUILT + 142)), BUILT + 142.6, 'wall_limit'),
+    (dict(all_exited=True, truth=(4.0, BUILT + 10)), BUILT + 10 + TRUTH_QUIET + 0.1,
+     'all_exited'),
+    (dict(), BUILT + SIMULATOR_WAIT + 2 * 5.0 + 0.1, 'no_simulator'),
+    (dict(truth=(4.0, BUILT + 10), over_disk=True), BUILT + 10, 'disk_limit'),
+], ids=['cancelled', 'duration', 'required', 'wall', 'all_exited', 'no_simulator', 'disk'])
+def test_each_reason_alone(known, now, reason):
+    assert end_reason(facts(**known), now) == reason
+
+
+def test_the_clock_decides_the_waits():
+    # every command exited, but the simulator still reports: the system is not gone yet
+    f = facts(all_exited=True, truth=(4.0, BUILT + 10))
+    assert end_reason(f, BUILT + 10 + TRUTH_QUIET) is None
+    # no ground truth yet: the commands' delays are waited for too
+    assert end_reason(facts(), BUILT + SIMULATOR_WAIT + 9.9) is None
+    assert end_reason(facts(all_exited=True), BUILT + 0.1) == 'all_exited'
+
+
+def test_the_order_is_the_precedence():
+    everything = dict(truth=(30.0, BUILT), required_died='dog-5', all_exited=True,
+                      over_disk=True)
+    late = BUILT + 500
+    assert end_reason(facts(cancelled=True, **everything), late) == 'cancelled'
+    assert end_reason(facts(**everything), late) == 'duration'
+    everything['truth'] = (4.0, BUILT)
+    assert end_reason(facts(**everything), late) == 'required_node_died'
+    del everything['required_died']
+    assert end_reason(facts(**everything), late) == 'wall_limit'
+    assert end_reason(facts(**everything), BUILT + 100) == 'all_exited'
+    assert end_reason(facts(over_disk=True), BUILT + 101) == 'no_simulator'
+    assert end_reason(facts(over_disk=True), BUILT + 99) == 'disk_limit'
+
+
+def test_no_death_but_a_required_nodes_ends_a_run():
+    """roslaunch runs on when a node dies (and restarts a respawn="true" one): so
+    does the run. The monitor's facts hold no other death."""
+    assert not hasattr(facts(), 'node_died')
+    f = facts(truth=(12.0, BUILT + 30.0))
+    assert end_reason(f, BUILT + 31.0) is None
+    f.required_died = 'robot_state_publisher-3'
+    assert end_reason(f, BUILT + 31.0) == 'required_node_died'
