@@ -26,8 +26,9 @@ SRC="$(dirname "$(dirname "$HERE")")/src"
 export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"
 
 # tf-tools, tf2-tools: rosrun tf tf_echo / view_frames, static_transform_publisher of tf and tf2_ros
+# xterm: the terminal windows (gnome-terminal, launch-prefix="xterm -e") open in it
 APT_PACKAGES=(python3-tf python3-scipy python3-opencv python3-numpy python3-pip python3-cv-bridge
-              tf-tools tf2-tools)
+              tf-tools tf2-tools xterm)
 # The rest of ROS Noetic's desktop-full that Debian has and students' code may import or
 # start, which every desktop-full install had (docs/original_env_supplies.md, "ROS Noetic
 # desktop-full, package by package"); the -dev ones bring the package.xml that rosrun needs.
