@@ -210,7 +210,8 @@ def to_json_legs(legs):
 
 
 def _compile(legs, o, seed):
-    """The timeline: one segment per hide, show and stay, two per move."""
+    """The timeline: one segment per hide, show and stay, two per move; its
+    times to the microsecond, as :func:`play` reads them."""
     first = next((leg.place for leg in legs if leg.place is not None), None)
     x, y = first if first is not None else (0.0, 0.0)
     hidden, t, segments = True, 0.0, []
@@ -221,19 +222,23 @@ def _compile(legs, o, seed):
             x, y = leg.place
             hidden = False
         else:           # shown (parse_legs): from where it is
-            travel = math.hypot(leg.place[0] - x, leg.place[1] - y) / leg.speed
-            segments.append(Segment(t, t + travel, x, y, leg.place[0], leg.place[1], False))
-            t += travel
+            arrive = round(t + math.hypot(leg.place[0] - x, leg.place[1] - y) / leg.speed, 6)
+            segments.append(Segment(t, arrive, x, y, leg.place[0], leg.place[1], False))
+            t = arrive
             x, y = leg.place
-        segments.append(Segment(t, t + leg.stay, x, y, x, y, hidden))
-        t += leg.stay
+        segments.append(Segment(t, round(t + leg.stay, 6), x, y, x, y, hidden))
+        t = segments[-1].t1
     return Script(tuple(legs), tuple(segments), tuple(s.t0 for s in segments), seed,
                   o.duration, o.ground_z)
 
 
 def play(script, t):
     """Where the ball of ``script`` is at script time ``t`` (s): a
-    :class:`BallPose`. Before 0 as at 0; after the last leg, as it ended."""
+    :class:`BallPose`. Before 0 as at 0; after the last leg, as it ended.
+    ``t`` is taken to the microsecond: a time that is a whole number of steps
+    (a stamp, ``steps * time_step``) falls on the same side of a hide or a
+    show however its float was summed."""
+    t = round(t, 6)
     i = max(0, bisect.bisect_right(script.starts, t) - 1)
     seg = script.segments[i]
     span = seg.t1 - seg.t0

@@ -186,4 +186,4 @@ class ScriptedBall(object):
     def before_physics(self):
         """Before a physics step (after the plugins applied their commands):
         where the script has the ball when the step ends."""
-        self.place(self.engine.time + self.engine.time_step)
+        self.place((self.engine.steps + 1) * self.engine.time_step)   # its time then
