@@ -195,3 +195,23 @@ def test_a_world_with_no_room_leaves_the_ball_to_the_nodes():
         assert engine.models['ball'].placed == 1
     finally:
         engine.close()
+
+
+def test_in_an_sdf_world_the_course_keeps_within_its_walls_and_clear_of_its_objects():
+    from exp_assignment2.sim import sdf
+    here = os.path.dirname(os.path.abspath(__file__))
+    found = sdf.read_world(os.path.join(os.path.dirname(here), 'fixtures', 'student_pkg',
+                                        'worlds', 'small.world'))
+    engine = Engine(registry=CORES, log=RecordingLog(), settings={'ball_script': {'seed': 8}})
+    try:
+        for model in found.models:            # walls at y = +-6, a post, a meshed barrier
+            engine.spawn(model.name, model.urdf, model.pose)
+        engine.spawn('ball', urdf('ball.urdf'), (1.5, 0.0, 0.5, 0.0), namespace='ball')
+        places = [leg.place for leg in engine.scripted_ball.script.legs if leg.place]
+        assert len(places) >= 5
+        for x, y in places:
+            assert abs(x) <= 4.6 and abs(y) <= 4.6, (x, y)       # 1 m inside the walls' box
+            assert math.hypot(x + 3.0, y - 3.0) >= 1.5           # the post at (-3, 3)
+            assert not (-7.0 <= x <= -1.0 and -5.1 <= y <= -2.4), (x, y)   # the barrier
+    finally:
+        engine.close()
