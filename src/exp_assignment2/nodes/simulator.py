@@ -25,7 +25,7 @@ from exp_assignment2.ros import grader_link
 from exp_assignment2.ros import steady_publishing
 from exp_assignment2.ros.log import RosLog
 from exp_assignment2.ros.world_markers import WorldMarkers
-from exp_assignment2.sim import releases
+from exp_assignment2.sim import ball_setting, releases
 from exp_assignment2.sim.engine import Engine
 from exp_assignment2.sim.plugins import registry
 from exp_assignment2.sim.world import parse_model, parse_world
@@ -41,7 +41,7 @@ NODE_PARAMS = {'real_time_factor': 1.0, 'max_real_time_factor': MAX_REAL_TIME_FA
                'camera_width': None, 'camera_height': None, 'camera_rate': None,
                'camera_hfov': None, 'jpeg_quality': 80, 'wait_for_camera': False,
                'start_timeout': 30.0, 'hidden': [], 'urdf_dir': None, 'world_file': None,
-               'robot_ns': '', 'poses': {}, 'ros_release': None,
+               'robot_ns': '', 'poses': {}, 'ros_release': None, 'ball_script': None,
                # gazebo_ros' own (empty_world.launch sets them under /gazebo)
                'pub_clock_frequency': 0.0, 'enable_ros_network': True}
 
@@ -85,6 +85,8 @@ class SimulatorNode(object):
         self._urdf_dir_found = None
         # the parameter, else the environment (a grader's sandbox): ReleaseError names it
         self.release = releases.choose(self.params['ros_release'])
+        # likewise the ball's course (a grader's run): ScriptError names a bad one
+        ball_script = ball_setting.choose(self.params['ball_script'])
         world = parse_world({k: v for k, v in params.items() if k not in NODE_PARAMS})
         p = self.params
         if float(p['real_time_factor']) == 0:
@@ -106,7 +108,7 @@ class SimulatorNode(object):
             settings=dict(renderer=str(p['renderer']), cmd_timeout=float(p['cmd_timeout']),
                           max_linear=float(p['max_linear']),
                           max_angular=float(p['max_angular']), camera=camera,
-                          ros_release=self.release.name,
+                          ros_release=self.release.name, ball_script=ball_script,
                           # at real_time_factor 0, frames wait for consumers that acknowledge them
                           frame_pace=float(p['real_time_factor']) == 0,
                           jpeg_quality=int(p['jpeg_quality'])))
@@ -146,11 +148,13 @@ class SimulatorNode(object):
         self.truth = grader_link.attach(self.engine)     # a grader's run: its ground truth
         pacer = self.engine.pacer
         rospy.loginfo('simulator: %d models, step %.4f s, real_time_factor %g%s%s; Gazebo\'s '
-                      'ROS plugins as in ROS %s', len(self.engine.models),
+                      'ROS plugins as in ROS %s%s', len(self.engine.models),
                       self.engine.time_step, pacer.rtf,
                       ' (as fast as possible, at most %gx)' % pacer.pace
                       if pacer.rtf == 0 and pacer.pace else '',
-                      ', paused' if self.engine.paused else '', self.release.describe())
+                      ', paused' if self.engine.paused else '', self.release.describe(),
+                      '; the ball follows the course\'s script (%s)' % ball_script.describe()
+                      if ball_script is not None else '')
 
     def _spawn_sdf_world(self, path):
         """The models of an SDF world file ('' : Gazebo's empty world)."""

@@ -18,7 +18,7 @@ import math
 import threading
 
 
-from exp_assignment2.sim import releases, urdf as urdf_reader
+from exp_assignment2.sim import releases, scripted_ball, urdf as urdf_reader
 from exp_assignment2.sim.model import Model
 from exp_assignment2.sim.pacing import MAX_REAL_TIME_FACTOR, Pacer
 from exp_assignment2.sim.physics import Physics
@@ -61,7 +61,8 @@ class Engine(object):
         get one warning each and are ignored, as Gazebo would fail to load them
     :param bounds: (x_min, x_max, y_min, y_max) that driven bodies keep within
     :param settings: host settings handed to plugins (``EngineHandle.settings``);
-        ``ros_release`` names the :class:`~.releases.Release` its plugins follow
+        ``ros_release`` names the :class:`~.releases.Release` its plugins follow,
+        ``ball_script`` a course for the ball (:mod:`.scripted_ball`)
     :param log: an object with ``info``, ``warn``, ``error`` (default: logging)
     :param max_real_time_factor: real_time_factor 0's ceiling (0: none; see
         :mod:`.pacing`)
@@ -72,12 +73,13 @@ class Engine(object):
                  max_real_time_factor=MAX_REAL_TIME_FACTOR):
         self.settings = dict(settings or {})
         self.release = releases.release(self.settings.get('ros_release'))  # ReleaseError
+        self.bounds = tuple(bounds) if bounds is not None else INFINITE_BOUNDS
+        self.scripted_ball = scripted_ball.start(self, self.settings.get('ball_script'))
         self.physics = Physics(time_step, egl=egl)
         self.time_step = self.physics.time_step
         self._step_ns = int(round(self.time_step * 1e9))
         self.pacer = Pacer(real_time_factor, max_real_time_factor=max_real_time_factor)
         self.registry = dict(registry or {})
-        self.bounds = tuple(bounds) if bounds is not None else INFINITE_BOUNDS
         self._guard_logs = {}          # model name -> RefusalLog
         self._guard_region = world_region(
             self.bounds, GUARD_MARGIN,
@@ -139,6 +141,8 @@ class Engine(object):
             self.log.warn('model %s: %s' % (name, text))
         self.models[name] = model
         self.plugins[name] = plugins
+        if self.scripted_ball is not None:
+            self.scripted_ball.spawned(model)
         self._changed()
         return model
 
@@ -170,6 +174,8 @@ class Engine(object):
         for plugin in self.plugins.pop(name):
             plugin.close()
         self.models.pop(name).remove()
+        if self.scripted_ball is not None:
+            self.scripted_ball.deleted(name)
         self._changed()
 
     def _changed(self):
@@ -214,10 +220,12 @@ class Engine(object):
 
     # stepping
     def step(self):
-        """One physics step: commands, physics, the guard, then publishers."""
+        """One step: commands, the ball script, physics, the guard, publishers."""
         before, after = self._hooks
         for hook in before:
             hook()
+        if self.scripted_ball is not None:
+            self.scripted_ball.before_physics()
         self.physics.step()
         self.steps += 1
         self._guard()
@@ -274,6 +282,8 @@ class Engine(object):
             model.reset()
             for plugin in self.plugins[name]:
                 plugin.reset()
+        if self.scripted_ball is not None:
+            self.scripted_ball.place(self.time)
 
     def reset_simulation(self):
         """Gazebo's reset_simulation: reset_world, and simulated time back to 0."""

@@ -7,21 +7,26 @@ connects and streams JSON lines as the world runs:
 
 * ``{"kind": "hello", ...}``: once, at connection (pid, models, and
   ``ros_release``: the ROS release whose Gazebo plugins the world follows,
-  :mod:`~exp_assignment2.sim.releases`);
+  :mod:`~exp_assignment2.sim.releases`; ``ball_script``: the course the
+  simulator plays for the ball, :mod:`~exp_assignment2.sim.ball_setting`,
+  or null);
 * ``{"kind": "model", "t": T, "facts": {...}}``: each model in the world
   then, and each one spawned later, as it is
   (:func:`~exp_assignment2.sim.model_facts.describe`: its joints, sensors,
   plugins and the topics they take commands on, whether it is a sphere, the
-  ROS release it runs as), and
+  ROS release it runs as, ``scripted``: the ball script moving it, its seed,
+  start time and legs, else null), and
   ``{"kind": "deleted", "t": T, "name": ...}``: what the grader tells the
   robot, its head and the ball by, whatever they are called;
 * ``{"kind": "state", "t": T, "models": {name: [x, y, z, yaw]},
   "joints": {model: {joint: position}}, "fed": {model: n},
-  "placed": {model: n}}``: every ``period`` s of simulated time (10 Hz by
-  default), from the engine's own bodies: a node publishing a fake ``/odom``
-  changes nothing here. ``fed`` counts the commands a model's drive plugins
-  have taken so far, ``placed`` the times a command put it somewhere
-  (``set_model_state``, ``set_link_state``), each only where not 0;
+  "placed": {model: n}, "ignored": {model: n}}``: every ``period`` s of
+  simulated time (10 Hz by default), from the engine's own bodies: a node
+  publishing a fake ``/odom`` changes nothing here. ``fed`` counts the
+  commands a model's drive plugins have taken so far, ``placed`` the times a
+  command put it somewhere (``set_model_state``, ``set_link_state``),
+  ``ignored`` both of these sent to a model a ball script holds (which
+  counts them there only), each only where not 0;
 * ``{"kind": "frame", "t": T, "camera": name, "jpeg": BASE64}``: a camera's
   picture, small, at most once per ``frame_period`` s of simulated time,
   while somebody watches that camera (the frame is drawn anyway then);
@@ -116,8 +121,10 @@ class GroundTruth(object):
         self._next_frame = {}
         self._described, self._generation = {}, None     # name -> the Model described
         self.model_listeners = []        # fn(model) for each model described (the host's)
+        ball = engine.scripted_ball
         link.send({'kind': 'hello', 'pid': os.getpid(), 'time': engine.time,
-                   'models': list(engine.models), 'ros_release': engine.release.name})
+                   'models': list(engine.models), 'ros_release': engine.release.name,
+                   'ball_script': ball.setting.to_dict() if ball is not None else None})
         self._describe_changes()
 
     def _describe_changes(self):
@@ -149,9 +156,11 @@ class GroundTruth(object):
         self.link.send(self.sample(now), droppable=True)
 
     def sample(self, now):
-        models, joints, fed, placed = {}, {}, {}, {}
+        models, joints, fed, placed, ignored = {}, {}, {}, {}, {}
         for name, model in list(self.engine.models.items()):
             taken = sum(plugin.commands_taken for plugin in self.engine.plugins.get(name, ()))
+            if model.script is not None:        # a ball script moves it: nothing else did
+                taken, ignored[name] = 0, taken + model.ignored
             if taken:
                 fed[name] = taken
             if model.placed:
@@ -168,6 +177,8 @@ class GroundTruth(object):
             record['fed'] = fed
         if placed:
             record['placed'] = placed
+        if any(ignored.values()):
+            record['ignored'] = {name: n for name, n in ignored.items() if n}
         return record
 
     def offer_frame(self, camera, when, bgr):

@@ -9,6 +9,11 @@ it (joint motors, base velocity, a new pose). Three kinds of body:
   <gravity>0</gravity>``): no physics acts on it; it is moved by setting
   its pose (the ball). Below the ground (z < 0) it is hidden from cameras;
 * dynamic: everything else, moved by physics (the robots).
+
+A model a ball script holds (:meth:`Model.hold`, :mod:`.scripted_ball`) is
+kinematic and moved by the script alone: what others do to it
+(:meth:`set_pose`, :meth:`move_kinematic`, :meth:`set_world_velocity`) is
+ignored, and the placements among it counted in :attr:`ignored`.
 """
 import math
 
@@ -44,6 +49,8 @@ class Model(object):
         self.id = self.body.id
         self.spawn_hidden = self.hidden = bool(hidden) and self.kinematic
         self.placed = 0        # times put somewhere by a command (set_model/link_state)
+        self.script = None     # the ball script holding it (facts), else None
+        self.ignored = 0       # placements refused while a script holds it
         self._kinematic_pose = [x, y, z, yaw]
         for link, (mu1, mu2) in urdf.gazebo.friction.items():
             if link in self.body.links and mu1 is not None:
@@ -175,10 +182,14 @@ class Model(object):
 
     def set_world_velocity(self, linear, angular):
         """A dynamic body's base velocity (world frame), as Gazebo's SetLinearVel."""
+        if self.script is not None:
+            return
         p.resetBaseVelocity(self.id, list(linear), list(angular), physicsClientId=self.client)
 
     def move_kinematic(self, dx, dy, dyaw, twist=None):
         """Move a kinematic body by (dx, dy) (world) and turn it by dyaw."""
+        if self.script is not None:
+            return
         pose = self._kinematic_pose
         pose[0], pose[1], pose[3] = pose[0] + dx, pose[1] + dy, pose[3] + dyaw
         if twist is not None:
@@ -188,7 +199,11 @@ class Model(object):
     def set_pose(self, position, quaternion=None, twist=None):
         """Put the model's URDF root frame at ``position`` (orientation kept if
         None), at rest unless ``twist`` ((linear), (angular), world frame)
-        is given. A kinematic body below the ground (z < 0) is hidden."""
+        is given. A kinematic body below the ground (z < 0) is hidden. A
+        body a script holds stays where it is (the command is counted)."""
+        if self.script is not None:
+            self.ignored += 1
+            return
         self.placed += 1
         if quaternion is None:
             quaternion = self.pose()[1]
@@ -209,11 +224,45 @@ class Model(object):
             self.id, [x, y, HIDDEN_Z if self.hidden else z],
             p.getQuaternionFromEuler([0, 0, yaw]), physicsClientId=self.client)
 
+    # a ball script's
+    def hold(self, facts):
+        """From now on the script described by ``facts`` (plain data) moves
+        this body, kinematically, and nothing else does."""
+        if not self.kinematic:      # a dynamic sphere: no physics acts on it any more
+            (x, y, z), quat = self.pose()
+            self._kinematic_pose = [x, y, z, p.getEulerFromQuaternion(quat)[2]]
+            p.changeDynamics(self.id, -1, mass=0.0, physicsClientId=self.client)
+            p.resetBaseVelocity(self.id, [0, 0, 0], [0, 0, 0], physicsClientId=self.client)
+            self.kinematic = True
+        self.script = facts
+
+    def play(self, x, y, z, hidden, velocity):
+        """Where the script puts it (not a command: not counted); ``velocity``
+        (vx, vy) in the world frame, reported in its own."""
+        yaw = self._kinematic_pose[3]
+        c, s = math.cos(yaw), math.sin(yaw)
+        vx, vy = velocity
+        self._kinematic_pose = [x, y, z, yaw]
+        self._kinematic_twist = ((c * vx + s * vy, -s * vx + c * vy, 0.0), (0.0, 0.0, 0.0))
+        self.hidden = bool(hidden)
+        self._place()
+
+    def collision_box(self, link):
+        """((x0, y0, z0), (x1, y1, z1)): the world box around a link's
+        collisions, None when it has none."""
+        if not self.urdf.links[link].collisions:
+            return None
+        low, high = p.getAABB(self.id, self.body.links[link], physicsClientId=self.client)
+        return tuple(low), tuple(high)
+
     def reset(self):
-        """Back at the spawn pose, at rest, every joint at zero (reset_world)."""
+        """Back at the spawn pose, at rest, every joint at zero (reset_world);
+        a body a script holds stays where the script has it."""
         x, y, z, roll, pitch, yaw = self.spawn_pose
         for j, _, _, _ in self.body.joints.values():
             p.resetJointState(self.id, j, 0.0, 0.0, physicsClientId=self.client)
+        if self.script is not None:
+            return
         if self.kinematic:
             self._kinematic_pose = [x, y, z, yaw]
             self._kinematic_twist = Model._kinematic_twist

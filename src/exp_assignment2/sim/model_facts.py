@@ -32,7 +32,7 @@ def _joints(urdf):
     return out
 
 
-def _sphere(urdf):
+def sphere(urdf):
     """(radius, rgba) when the model is drawn as one sphere (a ball), else None."""
     visuals = [v for link in urdf.links.values() for v in link.visuals]
     if len(visuals) != 1 or visuals[0].kind != 'sphere':
@@ -55,14 +55,17 @@ def _sensors(urdf):
 def describe(model, plugins, ros_release=None):
     """The facts of a spawned :class:`~.model.Model` and its loaded plugins
     (each plugin's :meth:`~.plugins.base.Plugin.facts`), as JSON-ready data;
-    ``ros_release``: the release whose Gazebo plugins ran it (its name)."""
+    ``ros_release``: the release whose Gazebo plugins ran it (its name);
+    ``scripted``: the ball script moving it (seed, start, duration, legs:
+    :mod:`.scripted_ball`), None when it is not held by one."""
     urdf = model.urdf
-    sphere = _sphere(urdf)
+    ball = sphere(urdf)
     return {'name': model.name, 'namespace': model.namespace, 'ros_release': ros_release,
             'root': urdf.root,
             'static': bool(model.static), 'kinematic': bool(model.kinematic),
             'links': list(urdf.links), 'joints': _joints(urdf),
-            'sphere': sphere[0] if sphere else None,
-            'colour': sphere[1] if sphere else None,
+            'sphere': ball[0] if ball else None,
+            'colour': ball[1] if ball else None,
             'sensors': _sensors(urdf),
-            'plugins': [plugin.facts() for plugin in plugins]}
+            'plugins': [plugin.facts() for plugin in plugins],
+            'scripted': model.script}
