@@ -5,7 +5,7 @@ import os
 import pytest
 
 from exp_assignment2.sim import urdf
-from exp_assignment2.sim.gazebo_tags import GAZEBO_COLOURS
+from exp_assignment2.sim.gazebo_materials import GAZEBO_MATERIALS
 from exp_assignment2.sim.plugins.base import Options, PluginError
 
 URDF_DIR = os.path.join(os.path.dirname(__file__), '..', '..', 'urdf')
@@ -61,9 +61,9 @@ def test_plugins_sensors_colours_and_flags():
     assert sensor.options['camera']['image'] == {'width': '320', 'height': '240',
                                                  'format': 'R8G8B8'}
     assert tags.plugins[1].options == {'leftJoint': 'j_left', 'legacyMode': 'true'}
-    assert tags.colours == {'base': GAZEBO_COLOURS['Gazebo/Red']}
+    assert tags.colours == {'base': GAZEBO_MATERIALS['Gazebo/Red']}
     # Gazebo draws a link in its Gazebo material, whatever the URDF's colour
-    assert model.links['base'].visuals[0].rgba == GAZEBO_COLOURS['Gazebo/Red']
+    assert model.links['base'].visuals[0].rgba == GAZEBO_MATERIALS['Gazebo/Red']
     assert tags.gravity_off == {'wheel'} and tags.friction == {'base': (0.7, None)}
     assert not tags.static and tags.warnings == [] and model.warnings == []
 
@@ -85,7 +85,7 @@ def test_what_gazebo_would_not_understand_is_a_warning_not_a_failure():
     text = ROBOT.replace('Gazebo/Red', 'Gazebo/Sparkly').replace(
         '<gazebo reference="wheel">', '<gazebo reference="nowhere">')
     model = urdf.parse(text)
-    assert model.links['base'].visuals[0].rgba == GAZEBO_COLOURS['Gazebo/Grey']
+    assert model.links['base'].visuals[0].rgba == GAZEBO_MATERIALS['Gazebo/Grey']
     assert any("'Gazebo/Sparkly' is not known" in w for w in model.gazebo.warnings)
     assert model.warnings == ['<gazebo reference="nowhere">: no link or joint of that name; '
                               'ignored']
@@ -142,3 +142,19 @@ def test_options_are_typed_and_say_what_was_wrong():
         Options({'r': '0'}, 'w').number('r', 1.0, positive=True)
     with pytest.raises(PluginError, match='must be finite'):
         Options({'r': 'inf'}, 'w').number('r', 1.0)
+
+
+def test_one_colour_per_gazebo_material_in_urdf_and_sdf():
+    """A Gazebo/Wood URDF link and a Gazebo/Wood SDF visual are drawn alike,
+    and untextured materials take gazebo.material's diffuse."""
+    import xml.etree.ElementTree as ET
+    from exp_assignment2.sim import gazebo_tags, sdf_geometry
+    for name in ('Gazebo/Wood', 'Gazebo/Gold', 'Gazebo/Orange', 'Gazebo/ZincYellow'):
+        tags = gazebo_tags.read(ET.fromstring(
+            '<robot><gazebo reference="base"><material>%s</material></gazebo></robot>' % name))
+        visual = ET.fromstring('<visual><material><script><name>%s</name></script></material>'
+                               '</visual>' % name)
+        sdf = sdf_geometry.colour_of(visual, 'v')
+        assert sdf == tags.colours['base'] == GAZEBO_MATERIALS[name]
+    assert GAZEBO_MATERIALS['Gazebo/Orange'] == (1.0, 0.5088, 0.0468, 1.0)
+    assert GAZEBO_MATERIALS['Gazebo/Gold'] == (0.8, 0.64869, 0.120759, 1.0)

@@ -7,7 +7,7 @@ Gazebo users describe in their URDF what Gazebo adds to a model:
 * ``<gazebo reference="link"><sensor type="camera">...<plugin/></sensor>``:
   a sensor on a link, and the plugin that publishes it;
 * ``<gazebo reference="link"><material>Gazebo/Red</material>``: the link's
-  colour in Gazebo (:data:`GAZEBO_COLOURS`), ``<gravity>0</gravity>`` or
+  colour in Gazebo (:data:`GAZEBO_MATERIALS`), ``<gravity>0</gravity>`` or
   ``<turnGravityOff>true</turnGravityOff>``, ``<mu1>``/``<mu2>`` friction;
 * ``<gazebo><static>true</static></gazebo>``: a model that never moves.
 
@@ -16,29 +16,7 @@ serves which file name is the engine's business, not this module's.
 """
 from collections import OrderedDict, namedtuple
 
-# Gazebo's named materials (media/materials/scripts/gazebo.material) as RGBA:
-# their diffuse colours, rounded; *Transparent ones at half alpha.
-GAZEBO_COLOURS = {
-    'Gazebo/White': (1.0, 1.0, 1.0, 1.0), 'Gazebo/Grey': (0.7, 0.7, 0.7, 1.0),
-    'Gazebo/Gray': (0.7, 0.7, 0.7, 1.0), 'Gazebo/DarkGrey': (0.175, 0.175, 0.175, 1.0),
-    'Gazebo/Black': (0.0, 0.0, 0.0, 1.0), 'Gazebo/FlatBlack': (0.1, 0.1, 0.1, 1.0),
-    'Gazebo/Red': (1.0, 0.0, 0.0, 1.0), 'Gazebo/RedBright': (0.87, 0.26, 0.07, 1.0),
-    'Gazebo/Green': (0.0, 1.0, 0.0, 1.0), 'Gazebo/Blue': (0.0, 0.0, 1.0, 1.0),
-    'Gazebo/SkyBlue': (0.53, 0.81, 0.92, 1.0), 'Gazebo/Yellow': (1.0, 1.0, 0.0, 1.0),
-    'Gazebo/ZincYellow': (0.97, 0.95, 0.21, 1.0), 'Gazebo/DarkYellow': (0.7, 0.7, 0.0, 1.0),
-    'Gazebo/Purple': (1.0, 0.0, 1.0, 1.0), 'Gazebo/Turquoise': (0.0, 1.0, 1.0, 1.0),
-    'Gazebo/Orange': (1.0, 0.51, 0.05, 1.0), 'Gazebo/Indigo': (0.33, 0.0, 0.5, 1.0),
-    'Gazebo/Gold': (0.8, 0.65, 0.2, 1.0), 'Gazebo/Wood': (0.65, 0.45, 0.25, 1.0),
-    'Gazebo/WoodFloor': (0.6, 0.45, 0.3, 1.0), 'Gazebo/Bricks': (0.6, 0.3, 0.2, 1.0),
-    'Gazebo/Road': (0.3, 0.3, 0.3, 1.0), 'Gazebo/Residential': (0.6, 0.55, 0.5, 1.0),
-    'Gazebo/BlueGlow': (0.0, 0.0, 1.0, 1.0), 'Gazebo/RedGlow': (1.0, 0.0, 0.0, 1.0),
-    'Gazebo/GreenGlow': (0.0, 1.0, 0.0, 1.0), 'Gazebo/PurpleGlow': (1.0, 0.0, 1.0, 1.0),
-    'Gazebo/GreyTransparent': (0.5, 0.5, 0.5, 0.5),
-    'Gazebo/BlueTransparent': (0.0, 0.0, 1.0, 0.5),
-    'Gazebo/GreenTransparent': (0.0, 1.0, 0.0, 0.5),
-    'Gazebo/RedTransparent': (1.0, 0.0, 0.0, 0.5),
-}
-UNKNOWN_COLOUR = GAZEBO_COLOURS['Gazebo/Grey']
+from exp_assignment2.sim.gazebo_materials import GAZEBO_MATERIALS, UNKNOWN
 
 SensorDecl = namedtuple('SensorDecl', 'type name link update_rate always_on pose options')
 SensorDecl.__doc__ = """A ``<sensor>`` on ``link``: ``pose`` (x, y, z, roll, pitch, yaw)
@@ -140,10 +118,10 @@ def read(robot):
                 tags.plugins.extend(_plugin(p, ref, sensor) for p in plugins)
             elif tag == 'material' and ref:
                 name = (child.text or '').strip()
-                if name not in GAZEBO_COLOURS:
+                if name not in GAZEBO_MATERIALS:
                     tags.warnings.append('link %s: Gazebo material %r is not known here; drawn '
                                          'grey' % (ref, name))
-                tags.colours[ref] = GAZEBO_COLOURS.get(name, UNKNOWN_COLOUR)
+                tags.colours[ref] = GAZEBO_MATERIALS.get(name, UNKNOWN)
             elif tag in ('gravity', 'turnGravityOff') and ref:
                 off = _truth(child.text) if tag == 'turnGravityOff' else not _truth(child.text)
                 if off:

@@ -10,22 +10,11 @@ import os
 
 import numpy as np
 
+from exp_assignment2.sim.gazebo_materials import GAZEBO_MATERIALS, UNKNOWN
+from exp_assignment2.sim.urdf import rpy_matrix
+
 PLANE_THICKNESS = 0.02      # a <plane> becomes a box this thick whose top face is the plane
-DEFAULT_RGBA = (0.7, 0.7, 0.7, 1.0)
-# Gazebo's stock material scripts (media/materials/scripts/gazebo.material), by their
-# diffuse colour; an unknown script name gets DEFAULT_RGBA.
-GAZEBO_MATERIALS = {
-    'Gazebo/Grey': (0.7, 0.7, 0.7, 1), 'Gazebo/DarkGrey': (0.175, 0.175, 0.175, 1),
-    'Gazebo/LightGrey': (0.8, 0.8, 0.8, 1), 'Gazebo/White': (1, 1, 1, 1),
-    'Gazebo/FlatBlack': (0.1, 0.1, 0.1, 1), 'Gazebo/Black': (0, 0, 0, 1),
-    'Gazebo/Red': (1, 0, 0, 1), 'Gazebo/RedBright': (0.87, 0.26, 0.07, 1),
-    'Gazebo/Green': (0, 1, 0, 1), 'Gazebo/Blue': (0, 0, 1, 1),
-    'Gazebo/SkyBlue': (0.53, 0.81, 0.92, 1), 'Gazebo/Yellow': (1, 1, 0, 1),
-    'Gazebo/ZincYellow': (0.97, 0.87, 0.25, 1), 'Gazebo/Orange': (1, 0.5088, 0.0468, 1),
-    'Gazebo/Purple': (1, 0, 1, 1), 'Gazebo/Turquoise': (0, 1, 1, 1),
-    'Gazebo/Gold': (0.8, 0.64, 0.2, 1), 'Gazebo/Wood': (0.75, 0.55, 0.35, 1),
-    'Gazebo/Indigo': (0.33, 0, 0.5, 1), 'Gazebo/Bricks': (0.6, 0.3, 0.2, 1),
-}
+DEFAULT_RGBA = (0.7, 0.7, 0.7, 1.0)     # a visual with no material: light grey
 MESH_FILE_TYPES = ('.stl', '.obj')      # what the simulator can load; others need a stand-in
 
 
@@ -75,15 +64,6 @@ def pose_of(elem, where):
     return transform(values[:3], values[3:])
 
 
-def rpy_matrix(roll, pitch, yaw):
-    """3x3 rotation of URDF fixed-axis roll/pitch/yaw: Rz(yaw) Ry(pitch) Rx(roll)."""
-    cr, sr, cp, sp = math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch)
-    cy, sy = math.cos(yaw), math.sin(yaw)
-    return np.array([[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
-                     [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
-                     [-sp, cp * sr, cp * cr]])
-
-
 def transform(xyz, rpy):
     """4x4 transform of a translation and URDF roll/pitch/yaw."""
     m = np.eye(4)
@@ -120,7 +100,7 @@ def colour_of(visual, where):
                           'a colour')
             return tuple(min(max(v, 0.0), 1.0) for v in rgba + [1.0][:4 - len(rgba)])
     name = material.findtext('script/name', '').strip()
-    return GAZEBO_MATERIALS.get(name, DEFAULT_RGBA)
+    return GAZEBO_MATERIALS.get(name, UNKNOWN)
 
 
 PRIMITIVES = ('box', 'cylinder', 'sphere')

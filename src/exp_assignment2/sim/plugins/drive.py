@@ -3,21 +3,16 @@ and ``libgazebo_ros_planar_move.so``, with the options and defaults of
 gazebo_ros_pkgs (what changed between ROS releases: :mod:`..releases`).
 Each subscribes its command topic and publishes odometry and TF at its update
 rate; the driving itself is the ROS-free core (:mod:`.cores`)."""
-import math
-
 import rospy
 from geometry_msgs.msg import TransformStamped
 from sensor_msgs.msg import JointState
 from std_msgs.msg import Header
 from tf2_msgs.msg import TFMessage
 
+from exp_assignment2.geometry import quaternion_from_yaw
 from exp_assignment2.sim.plugins.cores import DiffDriveCore, Every, PlanarMoveCore
 from exp_assignment2.sim.plugins.ros_io import (CommandTopic, OdometryPublisher, joint_claims,
                                                 stamp)
-
-
-def yaw_quaternion(yaw):
-    return (0.0, 0.0, math.sin(yaw / 2.0), math.cos(yaw / 2.0))
 
 
 class DiffDrivePlugin(DiffDriveCore):
@@ -54,7 +49,7 @@ class DiffDrivePlugin(DiffDriveCore):
             if self.encoder is not None:
                 x, y, yaw = self.encoder.pose
                 vx, vy, w = self.encoder.twist
-                self.odometry.publish(when, (x, y, 0.0), yaw_quaternion(yaw), (vx, vy, 0.0),
+                self.odometry.publish(when, (x, y, 0.0), quaternion_from_yaw(yaw), (vx, vy, 0.0),
                                       (0.0, 0.0, w))
             else:
                 position, quaternion = self.model.pose()
