@@ -1,5 +1,6 @@
 """How the grader starts a submission, and what a profile may say
 (exp_assignment2.grading.commands, .profiles)."""
+import json
 import re
 
 import pytest
@@ -8,6 +9,7 @@ from exp_assignment2.grading import profiles
 from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, \
     readme_entries
 from exp_assignment2.grading.planning import resolve
+from exp_assignment2.grading.spec import RunSpec, settings
 
 README = '''# My assignment
 
@@ -32,7 +34,8 @@ def test_readme_commands_in_order_once(tmp_path):
     assert [(e['command'], e['kind']) for e in entries] == [
         ('roslaunch exp_assignment2 gazebo_world.launch', 'ros'),
         ('rosrun exp_assignment2 state_machine.py', 'ros'),
-        ('rosrun rqt_image_view rqt_image_view', 'watch')]
+        ('rosrun rqt_image_view rqt_image_view', 'watch'),
+        ('source devel/setup.bash', 'build')]
 
 
 def no_launch_files(requests, packages):
@@ -50,8 +53,10 @@ def test_start_from_teacher_readme_or_profile(tmp_path):
     got = resolve(str(tmp_path), 'exp_assignment2', 'bob', teacher, profile, set(),
                   no_launch_files)
     assert got['commands_from'] == "the submission's README.md" and len(got['commands']) == 2
-    assert [c['ran'] for c in got['readme_commands']] == [True, True, False]
+    assert [c['ran'] for c in got['readme_commands']] == [True, True, False, False]
     assert '`rosrun rqt_image_view rqt_image_view`: only watches' in got['notes'][-1]
+    assert got['readme_commands'][-1]['why'] == 'a build step: the grader builds the ' \
+        'submission itself'
     empty = tmp_path / 'empty'
     empty.mkdir()
     got = resolve(str(empty), 'my_pkg', 'carol', {}, profile, set(), no_launch_files)
@@ -127,3 +132,38 @@ def test_the_teacher_names_one_submissions_roles(tmp_path):
     assert teacher['submissions'] == {'alice': {'roles': {'robot': 'rover', 'head': 'neck_yaw'}}}
     assert teacher['errors']['bob'].startswith("grading.yaml: submissions: bob: roles: 'tail'")
 
+
+PROFILE = {'name': 'dog', 'duration': 200, 'delay': 5}
+
+
+@pytest.mark.parametrize('cli, teacher, expected', [
+    ({}, {}, ('dog', 200.0, 1.0, 5)),
+    ({}, {'profile': 'miro', 'duration': 60, 'real_time_factor': 2, 'delay': 3},
+     ('miro', 60.0, 2.0, 3)),
+    ({'profile': 'dog', 'duration': 30, 'real_time_factor': 4},
+     {'profile': 'miro', 'duration': 60, 'real_time_factor': 2}, ('dog', 30.0, 4.0, 5)),
+    ({'duration': 30}, {'real_time_factor': 2}, ('dog', 30.0, 2.0, 5)),
+    ({'real_time_factor': 3}, {'duration': 90}, ('dog', 90.0, 3.0, 5)),
+])
+def test_command_line_over_grading_yaml_over_the_profile(cli, teacher, expected):
+    profiles = {'dog': PROFILE, 'miro': dict(PROFILE, name='miro', duration=400, delay=7)}
+    chosen, where = settings(dict(dict.fromkeys(['profile', 'duration', 'real_time_factor']),
+                                  **cli), teacher, profiles.__getitem__)
+    if expected[0] == 'miro' and 'delay' not in teacher:
+        expected = expected[:3] + (7,)
+    assert (chosen['profile']['name'], chosen['duration'], chosen['real_time_factor'],
+            chosen['profile']['delay']) == expected
+    assert where['duration'] == ('the command line' if 'duration' in cli else 'grading.yaml'
+                                 if 'duration' in teacher else 'the profile')
+
+
+def test_a_spec_goes_to_a_worker_as_plain_json():
+    spec = RunSpec(name='ann', path='/class/ann.zip', kind='zip', seed=3, profile=PROFILE,
+                   real_time_factor=2, hidden=['/class'], version='0.1.0',
+                   commands=['roslaunch p w.launch'], commands_from="the submission's README.md",
+                   readme_commands=[{'command': 'rqt_graph', 'ran': False, 'why': 'watches'}])
+    assert spec.label == 'ann' and spec.duration == 200
+    again = RunSpec.from_dict(json.loads(json.dumps(spec.to_dict())))
+    assert again == spec and again.to_dict() == spec.to_dict()
+    with pytest.raises(TypeError):
+        RunSpec(name='x', start='what')
