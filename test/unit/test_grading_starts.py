@@ -2,6 +2,9 @@
 a start script as its shell runs it, a README's commands typed a few seconds
 apart, grading.yaml's own timing, and the driver's loop on a hand-turned
 clock (no process, no ROS)."""
+import json
+import os
+
 import pytest
 
 from exp_assignment2.grading import start_script, starts
@@ -178,3 +181,72 @@ def test_the_plan_in_words():
         'at once', '5 s after `roslaunch p w.launch` started',
         'as soon as `rosrun p a.py` ended', 'with `roslaunch p w.launch`',
         '2 s after the master']
+
+
+def test_the_runs_plan_gives_each_start_a_folder_inside_the_submission(tmp_path):
+    from exp_assignment2.grading.runner import Run, RunSettings
+    from exp_assignment2.grading.spec import RunSpec
+    plan = [dict(s, cwd=cwd) for s, cwd in zip(
+        starts.typed(['roslaunch a.launch', 'rosrun p b.py', 'rosrun p c.py'], 5), (
+            'my_pkg/launch', '../../outside', ''))]
+    spec = RunSpec(name='ann', path=str(tmp_path), kind='dir', profile={'duration': 10},
+                   commands=starts.commands_of(plan), starts=plan, root_from_package='..')
+    run = Run(RunSettings({'duration': 10, 'delay': 5}, str(tmp_path / 'runs')), spec)
+    run._fresh_dirs()
+    package_dir = os.path.join(run.work, 'src', 'my_pkg')
+    written = load(run._plan(package_dir))
+    root = os.path.join(run.work, 'src')
+    assert [s['dir'] for s in written['starts']] == [
+        os.path.join(root, 'my_pkg', 'launch'), root, root]
+    assert written['commands'] == spec.commands and written['delay'] == 5
+    # a spec from before there were plans: its commands delay apart, from the root
+    old = RunSpec(name='ann', path=str(tmp_path), kind='dir', profile={'duration': 10},
+                  commands=['roslaunch p a.launch', 'rosrun p b.py'])
+    run = Run(RunSettings({'duration': 10, 'delay': 3}, str(tmp_path / 'runs')), old)
+    written = load(run._plan(package_dir))
+    assert [(s['after'], s['dir']) for s in written['starts']] == [(0.0, package_dir),
+                                                                    (3.0, package_dir)]
+
+
+def load(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def test_the_driver_starts_each_command_in_its_folder_when_due(tmp_path, capsys):
+    """inside.follow_plan with real processes: the second waits for the
+    first's end, each runs in its folder, the events say when and where."""
+    import sys
+    import threading
+    from exp_assignment2.grading import paths
+    sys.path.insert(0, paths.GRADING)      # as the sandbox runs it: a script beside paths.py
+    try:
+        import inside
+    finally:
+        sys.path.remove(paths.GRADING)
+    (tmp_path / 'launch').mkdir()
+    plan = {'package': str(tmp_path), 'logs': str(tmp_path / 'logs'), 'starts': [
+        {'command': "sh -c 'pwd > here; sleep 0.3'", 'cwd': 'launch', 'after': 0.0,
+         'since': None, 'dir': str(tmp_path / 'launch')},
+        {'command': 'touch after', 'cwd': '', 'after': 0.2, 'since': ['end', 0],
+         'dir': str(tmp_path)},
+        {'command': 'no_such_program_here', 'cwd': '', 'after': 0.0, 'since': ['start', 0],
+         'dir': str(tmp_path)},
+        {'command': 'sleep 5', 'cwd': '', 'after': 0.0, 'since': ['end', 1]},
+        {'command': 'true', 'cwd': '', 'after': 0.0, 'since': ['end', 3]}]}
+    (tmp_path / 'logs').mkdir()
+    stop = threading.Event()
+    threading.Timer(3.0, stop.set).start()
+    commands, exited = inside.follow_plan(plan, None, stop)
+    inside.end_all([proc for _, _, proc in commands])
+    events = [json.loads(line) for line in capsys.readouterr().out.splitlines()]
+    said = {(e['event'], e['index']): e for e in events}
+    assert (tmp_path / 'launch' / 'here').read_text().strip() == str(tmp_path / 'launch')
+    assert (tmp_path / 'after').exists()
+    assert said[('started', 0)]['cwd'] == 'launch' and said[('started', 0)]['at'] < 0.5
+    # 0.3 s of the first, 0.2 after its end, a look every 0.5 s at most
+    assert 0.45 <= said[('started', 1)]['at'] - said[('started', 0)]['at'] < 2.5
+    assert said[('exited', 2)]['rc'] == 127 and 'since' in said[('exited', 2)]
+    assert said[('started', 3)]['at'] >= said[('started', 1)]['at']
+    assert said[('never_started', 4)]['since'] == ['end', 3]
+    assert exited == {0, 1}

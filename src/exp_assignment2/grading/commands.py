@@ -221,9 +221,12 @@ def readme_entries(root, package_dir=None, packages=None):
 
     def add(command, where, cwd, **extra):
         kind = kind_of(command)
-        if not kind or (command, cwd) in seen:
+        # the same command is run once; a path in it means another file from another folder
+        key = (command, cwd) if kind == 'script' or kind == 'ros' and ros_parts(
+            shell.words(command))['package'] is None else command
+        if not kind or key in seen:
             return None
-        seen[(command, cwd)] = len(entries)
+        seen[key] = len(entries)
         entries.append(dict({'command': command, 'kind': kind, 'from': where, 'cwd': cwd},
                             **extra))
         if kind == 'build':
