@@ -250,3 +250,27 @@ def test_the_driver_starts_each_command_in_its_folder_when_due(tmp_path, capsys)
     assert said[('started', 3)]['at'] >= said[('started', 1)]['at']
     assert said[('never_started', 4)]['since'] == ['end', 3]
     assert exited == {0, 1}
+
+
+def test_the_page_says_when_each_command_started_and_from_where():
+    from exp_assignment2.grading import report_starts
+    run = {'commands': ['roslaunch p w.launch', 'roslaunch --wait p all.launch', 'rosrun p a.py',
+                        'rosrun p after.py'],
+           'events': [{'event': 'master', 'up': True},
+                      {'event': 'started', 'index': 0, 'at': 0.0, 'after': 0, 'since': None},
+                      {'event': 'started', 'index': 1, 'at': 5.01, 'after': 5,
+                       'since': ['start', 0], 'cwd': 'launch'},
+                      {'event': 'started', 'index': 2, 'at': 7.02, 'after': 7,
+                       'since': ['start', 0]},
+                      {'event': 'exited', 'index': 2, 'rc': 1},
+                      {'event': 'never_started', 'index': 3, 'after': 0, 'since': ['end', 1]}]}
+    assert [(r['cwd'], r['planned'], r['at'], r['what']) for r in report_starts.rows(run)] == [
+        ('', 'at once', 0.0, ''),
+        ('launch', '5 s after `roslaunch p w.launch` started', 5.01, ''),
+        ('', '7 s after `roslaunch p w.launch` started', 7.02, ''),
+        ('', 'as soon as `roslaunch --wait p all.launch` ended', None,
+         'never started: its shell still waited for `roslaunch --wait p all.launch` to end')]
+    page = report_starts.table(run)
+    assert '<td>5.0</td>' in page and '<td>launch</td>' in page
+    # not built: nothing started, the commands are all there is
+    assert report_starts.table({'commands': ['a b c'], 'events': []}) == '<pre>a b c</pre>'
