@@ -195,6 +195,7 @@ def read_all(requests, packages):
     ('    $ cd ~/catkin_ws/src/assignment_2/launch; roslaunch gazebo_world.launch\n', 'launch'),
     ('    roscd my_pkg/launch\n    roslaunch gazebo_world.launch\n', 'launch'),
     ('    cd scripts\n    cd ../launch\n    roslaunch gazebo_world.launch\n', 'launch'),
+    ('    cd $(rospack find my_pkg)/launch\n    roslaunch gazebo_world.launch\n', 'launch'),
 ])
 def test_a_cd_sets_the_folder_the_commands_after_it_run_from(tmp_path, readme, cwd):
     root = submission(tmp_path, readme)

@@ -60,7 +60,13 @@ def test_a_script_is_timed_as_its_shell_runs_it(text, expected):
     assert [(s['command'], s['after'], s['since']) for s in read(text)] == expected
 
 
-def test_cd_in_a_script_and_inside_a_terminal():
+def test_cd_in_a_script_and_inside_a_terminal(tmp_path):
+    from exp_assignment2.grading import own_names
+    (tmp_path / 'launch').mkdir()
+    got = start_script.read('cd $(rospack find p)/launch\nrosrun p a.py\n', '', lambda tool,
+                            here, target: own_names.cd(str(tmp_path), here, target,
+                                                       {'p': str(tmp_path)}))
+    assert got[0]['cwd'] == 'launch'
     got = read('cd launch\nroslaunch a.launch &\n'
                'gnome-terminal -x sh -c "cd ~/scripts; rosrun p b.py"\nrosrun p c.py\n')
     assert [(s['command'], s['cwd']) for s in got] == [
@@ -204,8 +210,8 @@ def test_the_runs_plan_gives_each_start_a_folder_inside_the_submission(tmp_path)
                   commands=['roslaunch p a.launch', 'rosrun p b.py'])
     run = Run(RunSettings({'duration': 10, 'delay': 3}, str(tmp_path / 'runs')), old)
     written = load(run._plan(package_dir))
-    assert [(s['after'], s['dir']) for s in written['starts']] == [(0.0, package_dir),
-                                                                    (3.0, package_dir)]
+    assert [(s['after'], s['dir']) for s in written['starts']] == [
+        (0.0, package_dir), (3.0, package_dir)]
 
 
 def load(path):

@@ -33,7 +33,7 @@ STARTS = re.compile(
 BUILD = re.compile(
     r'(?:^|\s)((?:catkin_make(?:_isolated)?|catkin\s+(?:build|make))(?:\s.*)?'
     r'|(?:source|\.)\s+\S*setup\.(?:bash|sh|zsh)\b.*|rosdep\s+install\b.*|chmod\s+\S*\+x\b.*)$')
-CD = re.compile(r'(?:^|[\s$#>])(cd|roscd)(?:\s+(\S+))?$')
+CD = re.compile(r'(?:^|[\s$#>])(cd|roscd)(?:\s+(\$\(\s*rospack\s+find\s+[\w-]+\s*\)\S*|\S+))?$')
 PLACEHOLDER = re.compile(r'[<>{}\[\]]|\.\.\.|\bYOUR_|\bpackage_name\b', re.IGNORECASE)
 # roslaunch's and rosrun's options that take a value
 VALUED = {'roslaunch': {'-p', '--port', '-c', '--child', '-u', '--server_uri', '--run_id',

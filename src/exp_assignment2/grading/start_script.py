@@ -102,7 +102,7 @@ class _Reader(object):
         if tool == 'sleep' and not background:
             return since, after + _duration(found), cwd
         if tool in ('cd', 'roscd'):
-            return since, after, self.cd(tool, cwd, found[1] if len(found) > 1 else '')
+            return since, after, self.cd(tool, cwd, ' '.join(found[1:]))
         if tool in TERMINALS:
             for line in _terminal_commands(found):
                 self.shell(line, cwd, since, after + TERMINAL_OPEN)
