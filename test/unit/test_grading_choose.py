@@ -296,4 +296,3 @@ def test_every_package_of_the_submission_is_looked_in(tmp_path):
         True, "dog_pkg has no world.launch: runs package dog_world's")
     assert ran(got)['roslaunch dog_world world.launch'][1].startswith('left out: also starts')
     assert seen[0][1]['dog_world'] == packages['dog_world']
-    assert got['root_from_package'] == '..'

@@ -196,12 +196,12 @@ def test_the_runs_plan_gives_each_start_a_folder_inside_the_submission(tmp_path)
         starts.typed(['roslaunch a.launch', 'rosrun p b.py', 'rosrun p c.py'], 5), (
             'my_pkg/launch', '../../outside', ''))]
     spec = RunSpec(name='ann', path=str(tmp_path), kind='dir', profile={'duration': 10},
-                   commands=starts.commands_of(plan), starts=plan, root_from_package='..')
+                   commands=starts.commands_of(plan), starts=plan)
     run = Run(RunSettings({'duration': 10, 'delay': 5}, str(tmp_path / 'runs')), spec)
     run._fresh_dirs()
-    package_dir = os.path.join(run.work, 'src', 'my_pkg')
-    written = load(run._plan(package_dir))
     root = os.path.join(run.work, 'src')
+    package_dir = os.path.join(root, 'my_pkg')
+    written = load(run._plan(package_dir, root=root))
     assert [s['dir'] for s in written['starts']] == [
         os.path.join(root, 'my_pkg', 'launch'), root, root]
     assert written['commands'] == spec.commands and written['delay'] == 5
