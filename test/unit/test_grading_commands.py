@@ -272,3 +272,26 @@ def test_the_readme_at_the_root_then_the_packages(tmp_path):
     assert readme_entries(str(root), str(pkg))[1] == 'README.md'
     (root / 'README.md').unlink()
     assert readme_entries(str(root), str(pkg))[1] == 'my_pkg/README.md'
+
+
+def test_a_build_lines_packages_are_built_and_said_so(tmp_path):
+    """resolve's build_packages reach packages.choose: a package only a build
+    line names is built for that reason; one the main package uses says so."""
+    from exp_assignment2.grading import packages
+    manifest = '<package format="2"><name>%s</name><version>0.0.1</version>%s</package>'
+    for name, depends in (('dog', '<depend>dog_msgs</depend>'), ('dog_msgs', ''),
+                          ('dog_tools', '')):
+        (tmp_path / name).mkdir()
+        (tmp_path / name / 'package.xml').write_text(manifest % (name, depends))
+    (tmp_path / 'README.md').write_text('    catkin build dog_msgs dog_tools\n'
+                                        '    roslaunch dog world.launch\n')
+    found = packages.find(str(tmp_path))
+    own = {p.name: p.path for p in found}
+    got = resolve(own['dog'], 'dog', 'a', {}, DOG, set(), read_all, root=str(tmp_path),
+                  packages=own)
+    assert got['build_packages'] == ['dog_msgs', 'dog_tools']
+    main = next(p for p in found if p.name == 'dog')
+    listed, _ = packages.choose(found, main, got['commands'], got['build_packages'])
+    assert {p['name']: p['why'] for p in listed} == {
+        'dog': 'built: the run is about it', 'dog_msgs': 'built: used by dog',
+        'dog_tools': "built: the README's build line names it"}
