@@ -142,6 +142,14 @@ def test_readme_commands_are_typed_delay_apart_and_a_failed_start_ends_at_once()
     assert {t[0] for t in times.values()} == {0.0}      # delay: 0, all at the same instant
 
 
+def test_the_plans_span_is_what_is_known_in_advance():
+    plan = starts.typed(['a x y', 'b x y'], 5.0) + [
+        {'command': 'c x y', 'after': 60, 'since': ['start', 1]},
+        {'command': 'd x y', 'after': 1, 'since': ['end', 0]},
+        {'command': 'e x y', 'after': 1, 'since': ['start', 3]}]
+    assert starts.span(plan) == 65.0 and starts.span([]) == 0.0
+
+
 def test_stop_is_honoured_while_a_command_waits():
     plan = starts.typed(['roslaunch p w.launch', 'rosrun p a.py'], 30.0)
     times, never = follow(plan, {}, until=10.0)

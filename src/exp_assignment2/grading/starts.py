@@ -90,6 +90,19 @@ def commands_of(plan):
     return [start['command'] for start in plan]
 
 
+def span(plan):
+    """Seconds after the master by which every start that waits on no end is
+    due (what a run waits before it may expect the simulator; a start after
+    another's end is not known in advance and is not counted)."""
+    at = {}
+    for i, start in enumerate(plan):
+        since = start.get('since')
+        if since and (since[0] == 'end' or since[1] not in at):
+            continue
+        at[i] = (at[since[1]] if since else 0.0) + float(start.get('after') or 0.0)
+    return max(at.values()) if at else 0.0
+
+
 class Schedule(object):
     """When each start of a plan is due, on a clock given (the driver's
     monotonic clock; a test's hand-turned one): ``origin`` is when the master
