@@ -9,12 +9,11 @@ start, one that never moves, a hostile one, the dog as a .zip and as a
 whose launch file names a node that is not there, a node that shows
 every camera frame in a window, a robot, head and ball renamed, a node
 importing what ROS desktop-full had, a helper that dies again and again, a
-required node that dies, the dog in an xterm window, a README that goes into
-launch/ and mistypes a launch file, and a start script whose own roslaunch
-must come before the node its terminal opens). Each ends with its expected
+required node that dies, the dog in an xterm window, and those of
+test_grader_shapes.py and test_grader_starts.py). Each ends with its expected
 verdict; the folder and everything outside the runs' directories are
-unchanged; the hostile run costs only its own verdict (the dog graded alone gets the
-verdict it gets beside it); every process of every run is gone; the report's
+unchanged; the hostile run costs only its own verdict (the dog graded alone
+gets the verdict it gets beside it); every process of every run is gone; the report's
 pages open in headless Chromium with no missing image.
 """
 import collections
@@ -166,29 +165,6 @@ def test_a_readme_is_read_as_a_person_reads_it(graded):
                                         'is no package assignment2: runs the submission')
     with open(os.path.join(graded['out'], 'pages', 'alternatives.html')) as f:
         assert 'left out: also starts /gazebo' in f.read()
-
-
-def test_a_readmes_cd_and_typo_and_a_start_scripts_timing(graded):
-    """test/start_fixtures.py: `cd launch` then `roslaunch gazebo_world.launch`
-    runs from launch/; a mistyped launch file runs the one close to it, said;
-    a start script's own roslaunch starts before the node its terminal opens
-    (which needs the launch file's node up: in text order it raised)."""
-    typo = graded['runs']['readme_cd_typo']
-    assert typo['verdict'] == 'passed', (typo['reason'], typo['notes'])
-    assert typo['commands'] == ['roslaunch gazebo_world.launch',
-                                'roslaunch exp_assignment2 dog_behavior.launch']
-    assert typo['notes'] == ["`roslaunch exp_assignment2 dog_beaviour.launch`: ran "
-                             "`dog_behavior.launch` for the README's `dog_beaviour.launch`"]
-    started = {e['index']: e for e in typo['events'] if e.get('event') == 'started'}
-    assert started[0]['cwd'] == 'launch' and started[1]['at'] >= 5.0
-    timing = graded['runs']['script_timing']
-    assert timing['verdict'] == 'passed', (timing['reason'], timing['notes'])
-    assert timing['commands'] == ['rosrun exp_assignment2 dog.py',
-                                  'roslaunch --wait exp_assignment2 gazebo_world.launch']
-    started = {e['index']: e['at'] for e in timing['events'] if e.get('event') == 'started'}
-    assert started[1] < started[0], started       # the script's own line first
-    with open(os.path.join(graded['out'], 'pages', 'script_timing.html')) as f:
-        assert '<td>a build step</td>' in f.read()     # its README's catkin_make
 
 
 def test_the_hostile_submission_costs_only_its_own_verdict(graded, tmp_path):
