@@ -15,6 +15,7 @@ import tarfile
 import zipfile
 
 import launch_rule_fixtures
+import start_fixtures
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 BASE = os.path.join(HERE, 'fixtures', 'grading', 'base')
@@ -31,6 +32,7 @@ EXPECTED = {'works': 'passed', 'tabs': 'passed', 'cpp_broken': 'not_built',
             'xterm_dog': 'passed'}
 EXPECTED.update(__import__('shape_fixtures').EXPECTED)     # each shape a submission comes in
 EXPECTED.update(__import__('release_fixtures').EXPECTED)   # the ROS release it was written for
+EXPECTED.update(start_fixtures.EXPECTED)     # a README's cd and typo, a start script's timing
 
 RAISES = '''#!/usr/bin/env python3
 import rospy
@@ -377,6 +379,8 @@ def make_folder(dest, names=None):
             _tutorials(package)
         elif name in launch_rule_fixtures.FIXTURES:
             launch_rule_fixtures.FIXTURES[name](package)
+        elif name in start_fixtures.MAKERS:
+            start_fixtures.MAKERS[name](package)
     shutil.rmtree(scratch, ignore_errors=True)
     return dest
 

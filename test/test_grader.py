@@ -9,11 +9,11 @@ start, one that never moves, a hostile one, the dog as a .zip and as a
 whose launch file names a node that is not there, a node that shows
 every camera frame in a window, a robot, head and ball renamed, a node
 importing what ROS desktop-full had, a helper that dies again and again, a
-required node that dies, and the dog in an xterm window). Each ends with its
-expected verdict; the
-folder and everything outside the runs' directories are unchanged; the
-hostile run costs only its own verdict (the dog graded alone gets the
-verdict it gets beside it); every process of every run is gone; the report's
+required node that dies, the dog in an xterm window, and those of
+test_grader_shapes.py and test_grader_starts.py). Each ends with its expected
+verdict; the folder and everything outside the runs' directories are
+unchanged; the hostile run costs only its own verdict (the dog graded alone
+gets the verdict it gets beside it); every process of every run is gone; the report's
 pages open in headless Chromium with no missing image.
 """
 import collections

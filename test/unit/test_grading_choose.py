@@ -2,7 +2,6 @@
 .planning.resolve), the settings' one precedence and the run's specification
 (.spec); launch files' nodes given by a fake reader, so no ROS and no master.
 One test reads real launch files in the sandbox (launch_nodes.read)."""
-import json
 import os
 import shutil
 
@@ -10,7 +9,6 @@ import pytest
 
 from exp_assignment2.grading import launch_nodes
 from exp_assignment2.grading.planning import resolve
-from exp_assignment2.grading.spec import RunSpec, settings
 
 DOG = {'world_commands': [], 'default_commands': ['roslaunch {package} gazebo_world.launch']}
 MIRO = {'world_commands': ['roslaunch {sim} miro_world.launch'],
@@ -130,10 +128,11 @@ def test_a_start_script_is_read_for_its_commands(tmp_path):
                                'roslaunch my_pkg miro.launch']
     assert got['commands_from'] == "the submission's README.md after the profile's world"
     listed = got['readme_commands']
-    assert listed[0] == {'command': './run.sh', 'ran': False, 'why': 'a start script: its '
-                         'roslaunch/rosrun lines are read, not the script run'}
+    assert listed[0] == {'command': './run.sh', 'ran': False, 'kind': 'script',
+                         'why': 'a start script: its roslaunch/rosrun lines are read, not the '
+                                'script run'}
     assert listed[1] == {'command': 'rosrun stage_ros stageros $(rospack find my_pkg)/w.world',
-                         'ran': False, 'from': 'run.sh',
+                         'ran': False, 'from': 'run.sh', 'kind': 'ros',
                          'why': "a simulator the profile's world replaces: left out"}
     assert [c['ran'] for c in listed[2:]] == [True, True]
 
@@ -160,42 +159,6 @@ def test_package_and_sim_are_put_in_every_command(tmp_path):
     assert got['commands'] == ['roslaunch exp_assignment2_sim miro_world.launch',
                                'roslaunch exp_assignment2_sim x.launch',
                                'rosrun exp_assignment2 y.py']
-
-
-PROFILE = {'name': 'dog', 'duration': 200, 'delay': 5}
-
-
-@pytest.mark.parametrize('cli, teacher, expected', [
-    ({}, {}, ('dog', 200.0, 1.0, 5)),
-    ({}, {'profile': 'miro', 'duration': 60, 'real_time_factor': 2, 'delay': 3},
-     ('miro', 60.0, 2.0, 3)),
-    ({'profile': 'dog', 'duration': 30, 'real_time_factor': 4},
-     {'profile': 'miro', 'duration': 60, 'real_time_factor': 2}, ('dog', 30.0, 4.0, 5)),
-    ({'duration': 30}, {'real_time_factor': 2}, ('dog', 30.0, 2.0, 5)),
-    ({'real_time_factor': 3}, {'duration': 90}, ('dog', 90.0, 3.0, 5)),
-])
-def test_command_line_over_grading_yaml_over_the_profile(cli, teacher, expected):
-    profiles = {'dog': PROFILE, 'miro': dict(PROFILE, name='miro', duration=400, delay=7)}
-    chosen, where = settings(dict(dict.fromkeys(['profile', 'duration', 'real_time_factor']),
-                                  **cli), teacher, profiles.__getitem__)
-    if expected[0] == 'miro' and 'delay' not in teacher:
-        expected = expected[:3] + (7,)
-    assert (chosen['profile']['name'], chosen['duration'], chosen['real_time_factor'],
-            chosen['profile']['delay']) == expected
-    assert where['duration'] == ('the command line' if 'duration' in cli else 'grading.yaml'
-                                 if 'duration' in teacher else 'the profile')
-
-
-def test_a_spec_goes_to_a_worker_as_plain_json():
-    spec = RunSpec(name='ann', path='/class/ann.zip', kind='zip', seed=3, profile=PROFILE,
-                   real_time_factor=2, hidden=['/class'], version='0.1.0',
-                   commands=['roslaunch p w.launch'], commands_from="the submission's README.md",
-                   readme_commands=[{'command': 'rqt_graph', 'ran': False, 'why': 'watches'}])
-    assert spec.label == 'ann' and spec.duration == 200
-    again = RunSpec.from_dict(json.loads(json.dumps(spec.to_dict())))
-    assert again == spec and again.to_dict() == spec.to_dict()
-    with pytest.raises(TypeError):
-        RunSpec(name='x', start='what')
 
 
 EVAL = '''<launch><arg name="x" value="$(eval open('{marker}2', 'w').write('x') or 1)"/>
@@ -268,3 +231,68 @@ def test_the_plan_reads_an_archive_on_the_teachers_side(tmp_path, monkeypatch):
     (folder / 'grading.yaml').write_text('with: [../course_pkg]\n')
     with pytest.raises(planning.TeacherFileError, match='with: is not supported'):
         planning.plan(args, str(tmp_path / 'out'), '0.1', print)
+
+
+def ran(got):
+    return {c['command']: (c['ran'], c['why']) for c in got['readme_commands']}
+
+
+LAUNCHES = {'launch/pet_behavior.launch': '<launch/>', 'launch/gazebo_world.launch': '<launch/>',
+            'launch/world1.launch': '<launch/>', 'launch/world2.launch': '<launch/>',
+            'launch/bell.launch': '<launch/>', 'scripts/state_machine.py': '',
+            'scripts/ball.py': ''}
+
+
+@pytest.mark.parametrize('written, runs, why', [
+    # a typo, a case difference, a node without its .py: the one own name close to it
+    ('roslaunch my_pkg pet_beaviour.launch', 'roslaunch my_pkg pet_behavior.launch',
+     "ran `pet_behavior.launch` for the README's `pet_beaviour.launch`"),
+    ('rosrun my_pkg State_Machine.py', 'rosrun my_pkg state_machine.py',
+     "ran `state_machine.py` for the README's `State_Machine.py`"),
+    ('rosrun my_pkg state_machine', 'rosrun my_pkg state_machine.py',
+     "ran `state_machine.py` for the README's `state_machine`"),
+    # renamed and mistyped: both said
+    ('roslaunch assignment2 gazebo_wrld.launch', 'roslaunch my_pkg gazebo_world.launch',
+     "there is no package assignment2: runs the submission's own (package.xml names it "
+     "my_pkg); ran `gazebo_world.launch` for the README's `gazebo_wrld.launch`"),
+    # near misses that stay as written: two names as close, only an ending in common,
+    # a name that is there, another package's file
+    ('roslaunch my_pkg world.launch', 'roslaunch my_pkg world.launch', ''),
+    ('roslaunch my_pkg ball.launch', 'roslaunch my_pkg ball.launch', ''),
+    ('roslaunch my_pkg world1.launch', 'roslaunch my_pkg world1.launch', ''),
+    ('rosrun my_pkg ball.py', 'rosrun my_pkg ball.py', ''),
+    ('roslaunch gazebo_ros empty_wrld.launch', 'roslaunch gazebo_ros empty_wrld.launch', ''),
+])
+def test_a_name_the_package_does_not_have_runs_the_one_close_to_it(tmp_path, written, runs,
+                                                                   why):
+    root = package(tmp_path, '`%s`\n' % written, LAUNCHES)
+    got = resolve(root, 'my_pkg', 'a', {}, DOG, {'gazebo_ros'}, lambda requests, packages: {
+        r['key']: {'nodes': []} for r in requests})
+    assert got['commands'] == [runs]
+    (item,) = got['readme_commands']
+    assert (item['ran'], item['why']) == (True, why)
+    assert bool(item.get('corrected')) == bool(why)
+    if why:
+        assert got['notes'][0] == '`%s`: %s' % (written, item['why'])
+
+
+def test_every_package_of_the_submission_is_looked_in(tmp_path):
+    """A repository of two packages, its README at the root: a launch file
+    named in the wrong one of them runs from the one that has it."""
+    root = tmp_path / 'repo'
+    for name in ('dog_pkg', 'dog_world'):
+        (root / name / 'launch').mkdir(parents=True)
+        (root / name / 'package.xml').write_text('<package><name>%s</name></package>' % name)
+    (root / 'dog_world' / 'launch' / 'world.launch').write_text('<launch/>')
+    (root / 'README.md').write_text('```\nroslaunch dog_pkg world.launch\n'
+                                    'roslaunch dog_world world.launch\n```\n')
+    packages = {'dog_pkg': str(root / 'dog_pkg'), 'dog_world': str(root / 'dog_world')}
+    seen = []
+    got = resolve(str(root / 'dog_pkg'), 'dog_pkg', 'a', {}, DOG, set(),
+                  reader({'world.launch': ['/gazebo']}, seen), root=str(root),
+                  packages=packages)
+    assert got['commands'] == ['roslaunch dog_world world.launch']
+    assert ran(got)['roslaunch dog_pkg world.launch'] == (
+        True, "dog_pkg has no world.launch: runs package dog_world's")
+    assert ran(got)['roslaunch dog_world world.launch'][1].startswith('left out: also starts')
+    assert seen[0][1]['dog_world'] == packages['dog_world']

@@ -1,47 +1,47 @@
 """What a submission's README and a teacher's ``grading.yaml`` say (no ROS).
 
-The README is read as a student writes one: commands in fenced blocks,
-indented blocks and inline code, after a shell prompt or ``&&``, in their
-order, each once. Each command found is one of: a ``roslaunch``/``rosrun``
-line (``ros``), a command for another shell that only watches (``watch``:
-``rostopic echo``, ``rqt_graph``, ``rviz``, ...), or a start script the README
-runs (``script``: ``./run.sh``, ``bash start.sh``), whose own ``roslaunch``/
-``rosrun`` lines (also inside ``gnome-terminal -x sh -c "..."`` or ``xterm -e``)
-follow it. What runs of them is decided in :mod:`.choose`.
+The README is read as a student writes one, and as a person reads it:
+commands in fenced blocks, indented blocks and inline code, after a shell
+prompt or ``&&``, in their order, each once. Each command found is one of: a
+``roslaunch``/``rosrun`` line (``ros``), a command for another shell that
+only watches (``watch``: ``rostopic echo``, ``rqt_graph``, ``rviz``, ...), a
+build step (``build``: ``catkin_make``, ``catkin build``, ``source
+devel/setup.bash``, ``rosdep install``, ``chmod +x``), or a start script the
+README runs (``script``: ``./run.sh``, ``bash start.sh``), whose own
+``roslaunch``/``rosrun`` lines follow it, each with the time its shell starts
+it (:mod:`.start_script`). A ``cd``/``roscd`` changes the folder of the
+commands after it, inside the submission (:func:`.own_names.cd`). What runs
+of them is decided in :mod:`.choose`.
 """
-import difflib
 import os
 import re
-import shlex
 
-import yaml
-
-from exp_assignment2.sim.releases import RELEASES
+from exp_assignment2.grading import own_names, shell, start_script
+# grading.yaml's reader, where the grader has always found it
+from exp_assignment2.grading.teacher_file import TeacherFileError, read_teacher_file  # noqa: F401
 
 README_NAMES = ('README.md', 'README.MD', 'Readme.md', 'readme.md', 'README', 'README.txt',
                 'README.rst')
 # packages of programs that only watch (rosrun rqt_graph rqt_graph, ...)
 VIEWERS = re.compile(r'^(rqt\w*|rviz|smach_viewer|image_view|rqt_image_view|rqt_graph)$')
-# one shell command: what follows a prompt, ``&&``, ``;`` or ``|``
+# one shell command, after a prompt
 STARTS = re.compile(
     r'(?:^|\s)((?:roslaunch|rosrun)\s.*'
     r'|(?:rostopic\s+(?:echo|hz|list|info|bw|type|find)|rosnode\s+\w+|rosservice\s+(?:list|info)'
     r'|rosparam\s+(?:get|list)|rqt\w*|rviz|smach_viewer|image_view)(?:\s.*)?'
     r'|(?:\./|(?:bash|sh)\s+)(?![\w./-]*setup\.sh)[\w./-]+\.sh\b.*)$')
-IN_SCRIPT = re.compile(r'\b(?:roslaunch|rosrun)\s+[^`\n;|&"\']+')
+BUILD = re.compile(
+    r'(?:^|\s)((?:catkin_make(?:_isolated)?|catkin\s+(?:build|make))(?:\s.*)?'
+    r'|(?:source|\.)\s+\S*setup\.(?:bash|sh|zsh)\b.*|rosdep\s+install\b.*|chmod\s+\S*\+x\b.*)$')
+CD = re.compile(r'(?:^|[\s$#>])(cd|roscd)(?:\s+(\$\(\s*rospack\s+find\s+[\w-]+\s*\)\S*|\S+))?$')
 PLACEHOLDER = re.compile(r'[<>{}\[\]]|\.\.\.|\bYOUR_|\bpackage_name\b', re.IGNORECASE)
-
-TOP_KEYS = {'profile': str, 'duration': (int, float), 'commands': list, 'delay': (int, float),
-            'real_time_factor': (int, float), 'submissions': dict, 'with': list,
-            'template': (list, str),     # the similarity report's (similarity_run.py)
-            'release': str}              # the course's first ROS release (ros_release.py)
-ONE_KEYS = {'commands': list, 'skip': bool, 'roles': dict, 'release': str}
-ROLE_KEYS = ('robot', 'head', 'ball')     # a submission's roles named by the teacher (roles.py)
-RELEASE_NAMES = tuple(RELEASES)      # the releases the simulator can play
-
-
-class TeacherFileError(Exception):
-    """One line naming the mistake in grading.yaml."""
+# roslaunch's and rosrun's options that take a value
+VALUED = {'roslaunch': {'-p', '--port', '-c', '--child', '-u', '--server_uri', '--run_id',
+                        '-w', '--numworkers', '-t', '--timeout', '--pid', '--args',
+                        '--find-node', '--master-logger-level', '--sigint-timeout',
+                        '--sigterm-timeout'},
+          'rosrun': {'--prefix'}}
+LAUNCH_PATH = ('.launch', '.xml', '.test')
 
 
 def _code_texts(text):
@@ -68,143 +68,202 @@ def _clean(command):
     return command
 
 
-def kind_of(command):
-    """'ros', 'watch' or 'script' for a command line (None: none of them, or
-    a placeholder such as ``roslaunch <your_package> file.launch``)."""
-    try:
-        words = shlex.split(command)
-    except ValueError:
+def ros_parts(found):
+    """{'tool', 'options', 'package', 'name', 'args'} of a ``roslaunch``/
+    ``rosrun`` command's words (``package`` None: ``roslaunch PATH``), or None."""
+    if not found or found[0] not in VALUED:
         return None
+    tool, options, i = found[0], [], 1
+    while i < len(found) and found[i].startswith('-'):
+        options.append(found[i])
+        if found[i] in VALUED[tool] and i + 1 < len(found):
+            options.append(found[i + 1])
+            i += 1
+        i += 1
+    rest = found[i:]
+    if tool == 'roslaunch' and rest and (rest[0].endswith(LAUNCH_PATH) or '/' in rest[0]):
+        return {'tool': tool, 'options': options, 'package': None, 'name': rest[0],
+                'args': rest[1:]}
+    if len(rest) < 2:
+        return None
+    return {'tool': tool, 'options': options, 'package': rest[0], 'name': rest[1],
+            'args': rest[2:]}
+
+
+def ros_line(parts):
+    """A command line again from :func:`ros_parts`."""
+    return shell.joined([parts['tool']] + parts['options'] + (
+        [parts['package']] if parts['package'] else []) + [parts['name']] + parts['args'])
+
+
+def kind_of(command):
+    """'ros', 'watch', 'build' or 'script' for a command line (None: none of
+    them, or a placeholder such as ``roslaunch <your_package> file.launch``)."""
+    words = shell.words(command)
     if not words or PLACEHOLDER.search(command):
         return None
-    if words[0] in ('roslaunch', 'rosrun'):
-        if len(words) < 3 and not (words[0] == 'roslaunch' and len(words) == 2
-                                   and words[1].endswith('.launch')):
+    if words[0] in VALUED:
+        parts = ros_parts(words)
+        if parts is None:
             return None
-        if words[0] == 'rosrun' and VIEWERS.match(words[1]):
-            return 'watch'
-        return 'ros'
+        return 'watch' if parts['tool'] == 'rosrun' and VIEWERS.match(parts['package']) \
+            else 'ros'
+    if BUILD.match(command):
+        return 'build'
     if words[0].endswith('.sh') or len(words) > 1 and words[1].endswith('.sh'):
         return 'script'
     return 'watch'
 
 
-def _commands_in(code):
-    """The commands of one line of code, in their order."""
+def _pieces(code):
+    """[('cd', tool, target) or ('command', text)] of one line of code."""
     found = []
-    for segment in re.split(r'&&|;|\|\|?', code):
-        match = STARTS.search(segment.strip())
+    for segment, _ in shell.segments(code):
+        match = CD.search(segment)
         if match:
-            found.append(_clean(match.group(1)))
+            found.append(('cd', match.group(1), match.group(2) or ''))
+            continue
+        match = BUILD.search(segment) or STARTS.search(segment)
+        if match:
+            found.append(('command', _clean(match.group(1))))
     return found
 
 
-def script_commands(package_dir, command):
-    """(the script's path relative to the package or None, its ``roslaunch``/
-    ``rosrun`` lines) for ``./run.sh`` or ``bash start.sh``: found by its name
-    where the README says, else anywhere in the package."""
-    words = shlex.split(command)
-    rel = words[0] if words[0].endswith('.sh') else words[1]
-    path = os.path.normpath(os.path.join(package_dir, rel))
-    if not (path.startswith(package_dir + os.sep) and os.path.isfile(path)):
-        path = None
-        for root, dirs, files in os.walk(package_dir):
-            dirs.sort()
-            if os.path.basename(rel) in files:
-                path = os.path.join(root, os.path.basename(rel))
-                break
-    if path is None:
-        return None, []
-    with open(path, errors='replace') as f:
-        text = f.read(1 << 20)
-    commands = []
-    for line in text.splitlines():
-        if line.lstrip().startswith('#'):
-            continue
-        commands.extend(_clean(m.group(0)) for m in IN_SCRIPT.finditer(line))
-    return os.path.relpath(path, package_dir), commands
-
-
-def readme_entries(package_dir):
-    """([{'command', 'kind', 'from'}], readme name or None): every command
-    the README gives, in order, each once; a start script's lines follow it."""
-    for name in README_NAMES:
-        path = os.path.join(package_dir, name)
-        if os.path.isfile(path):
+def build_packages(command):
+    """The package names a build line names (``--only-pkg-with-deps A``,
+    ``-DCATKIN_WHITELIST_PACKAGES="A;B"``, ``catkin build A B``, ``catkin_make
+    A``); [] for one that builds everything."""
+    words = shell.words(command) or []
+    if not words or words[0] not in ('catkin_make', 'catkin_make_isolated', 'catkin'):
+        return []
+    names, i, listing = [], 2 if words[0] == 'catkin' else 1, False
+    while i < len(words):
+        word = words[i]
+        if word.startswith('-DCATKIN_WHITELIST_PACKAGES=') or \
+                word.startswith('-DCATKIN_BUILDLIST_PACKAGES='):
+            names += [n for n in re.split(r'[;,\s]+', word.split('=', 1)[1]) if n]
+        elif word in ('--only-pkg-with-deps', '--pkg'):
+            listing = True
+        elif word in ('--cmake-args', '--make-args', '--catkin-make-args'):
             break
-    else:
-        return [], None
+        elif word in ('-C', '--directory', '--source', '--build', '-w', '--workspace',
+                      '--profile', '-j', '--jobs', '-p', '--parallel-packages'):
+            i += 1
+        elif not word.startswith('-'):
+            names.append(word)
+        elif listing:
+            listing = False
+        i += 1
+    return list(dict.fromkeys(names))
+
+
+def _readmes(root, package_dir):
+    """[(name relative to root, path)]: the root's README, then the main
+    package's when it is another file that says something else."""
+    found = []
+    for folder in (root, package_dir):
+        for name in README_NAMES:
+            path = os.path.join(folder, name)
+            if os.path.isfile(path):
+                text = _text(path)
+                if all(text != _text(p) for _, p in found):
+                    found.append((os.path.relpath(path, root), path))
+                break
+    return found
+
+
+def readme_text(root, package_dir=None):
+    """The text of the README(s) :func:`readme_entries` reads, one after the other."""
+    return '\n'.join(_text(path) for _, path in _readmes(root, package_dir or root))
+
+
+def _text(path):
     with open(path, errors='replace') as f:
-        text = f.read(1 << 20)
-    entries, seen = [], set()
+        return f.read(1 << 20)
 
-    def add(command, where):
+
+def _script(root, cwd, command):
+    """(the script's path relative to root, the folder it runs from) for
+    ``./run.sh`` or ``bash start.sh``: where the README is when it says it,
+    else found by its name anywhere in the submission (run from its folder);
+    (None, cwd) when it is not there."""
+    words = shell.words(command)
+    rel = words[0] if words[0].endswith('.sh') else words[1]
+    for base in (os.path.join(root, cwd), root):
+        path = os.path.normpath(os.path.join(base, rel))
+        if own_names.inside(root, path) and os.path.isfile(path):
+            return os.path.relpath(path, root), cwd
+    for path in own_names.files(root).get(os.path.basename(rel), []):
+        return os.path.relpath(path, root), _folder(root, os.path.dirname(path))
+    return None, cwd
+
+
+def _folder(root, path):
+    """A folder relative to root ('' for the root itself)."""
+    rel = os.path.relpath(path, root)
+    return '' if rel == '.' else rel
+
+
+def readme_entries(root, package_dir=None, packages=None):
+    """([{'command', 'kind', 'from', 'cwd'}], readme name or None): every
+    command the README gives (the root's, then the main package's if it has
+    another), in order, each once, with the folder it runs from (relative to
+    ``root``); a start script's lines follow it, each with ``of`` (the
+    script's entry) and ``start`` ({'after', 'since'}: see
+    :mod:`.start_script`, ``since`` ('end', k) naming an entry); a build
+    step has ``packages``. ``packages``: {name: folder} of the submission's."""
+    package_dir, packages = package_dir or root, packages or {}
+    entries, seen, names = [], {}, []
+
+    def cd(tool, cwd, target):
+        return (own_names.roscd if tool == 'roscd' else own_names.cd)(
+            root, cwd, target, packages)
+
+    def add(command, where, cwd, **extra):
         kind = kind_of(command)
-        if kind and command not in seen:
-            seen.add(command)
-            entries.append({'command': command, 'kind': kind, 'from': where})
-            return kind
-    for code in _code_texts(text):
-        for command in _commands_in(code):
-            if add(command, name) == 'script':
-                script, inside = script_commands(package_dir, command)
-                entries[-1]['script'] = script
-                for line in inside:
-                    add(line, script)
-    return entries, name
+        # the same command is run once; a path in it means another file from another folder
+        key = (command, cwd) if kind == 'script' or kind == 'ros' and ros_parts(
+            shell.words(command))['package'] is None else command
+        if not kind or key in seen:
+            return None
+        seen[key] = len(entries)
+        entries.append(dict({'command': command, 'kind': kind, 'from': where, 'cwd': cwd},
+                            **extra))
+        if kind == 'build':
+            entries[-1]['packages'] = build_packages(command)
+        return len(entries) - 1
+    for name, path in _readmes(root, package_dir):
+        names.append(name)
+        cwd = _folder(root, os.path.dirname(path))
+        for code in _code_texts(_text(path)):
+            for piece in _pieces(code):
+                if piece[0] == 'cd':
+                    cwd = cd(piece[1], cwd, piece[2])
+                    continue
+                index = add(piece[1], name, cwd)
+                if index is None or entries[index]['kind'] != 'script':
+                    continue
+                script, runs_in = _script(root, cwd, piece[1])
+                entries[index]['script'] = script
+                if script:
+                    _add_script(entries, index, add, start_script.read(
+                        _text(os.path.join(root, script)), runs_in, cd))
+    return entries, ' and '.join(names) or None
 
 
-def _check_keys(data, allowed, where):
-    for key, value in data.items():
-        if key not in allowed:
-            close = difflib.get_close_matches(str(key), list(allowed), n=1)
-            raise TeacherFileError('%s: unknown key %r%s (known: %s)' % (
-                where, key, ' (did you mean %r?)' % close[0] if close else '',
-                ', '.join(sorted(allowed))))
-        if not isinstance(value, allowed[key]) or isinstance(value, bool) and \
-                allowed[key] is not bool:
-            raise TeacherFileError('%s: %s: %r is not a %s' % (
-                where, key, value, getattr(allowed[key], '__name__', 'number')))
-    for key in ('commands',):
-        if key in data and not all(isinstance(c, str) and c.strip() for c in data[key]):
-            raise TeacherFileError('%s: commands: each must be a command line (a string)'
-                                   % where)
-    for key in ('duration', 'delay', 'real_time_factor'):
-        if key in data and not (0 <= data[key] <= 100000):
-            raise TeacherFileError('%s: %s: %r is out of range' % (where, key, data[key]))
-    if 'release' in data and data['release'] not in RELEASE_NAMES:
-        raise TeacherFileError('%s: release: %r is not one of %s' % (
-            where, data['release'], ', '.join(RELEASE_NAMES)))
-    for key, name in (data.get('roles') or {}).items():
-        if key not in ROLE_KEYS or not isinstance(name, str) or not name.strip():
-            raise TeacherFileError('%s: roles: %r: %r is not one of %s naming a model or joint'
-                                   % (where, key, name, ', '.join(ROLE_KEYS)))
-
-
-def read_teacher_file(path):
-    """The teacher's settings (a dict, checked); {} when there is no file."""
-    if not path or not os.path.isfile(path):
-        return {}
-    name = os.path.basename(path)
-    try:
-        with open(path) as f:
-            data = yaml.safe_load(f)
-    except (yaml.YAMLError, UnicodeDecodeError) as exc:
-        raise TeacherFileError('%s: not YAML: %s' % (name, str(exc).splitlines()[0]))
-    if data is None:
-        return {}
-    if not isinstance(data, dict):
-        raise TeacherFileError('%s: must be a mapping of settings' % name)
-    _check_keys(data, TOP_KEYS, name)
-    # a mistake in one submission's settings costs that submission only: it is
-    # kept in 'errors' (the grader reports it for that one) and its settings dropped
-    data['errors'] = {}
-    for who, settings in list((data.get('submissions') or {}).items()):
-        try:
-            if not isinstance(settings, dict):
-                raise TeacherFileError('%s: submissions: %s: must be a mapping' % (name, who))
-            _check_keys(settings, ONE_KEYS, '%s: submissions: %s' % (name, who))
-        except TeacherFileError as exc:
-            data['errors'][str(who)] = str(exc)
-            del data['submissions'][who]
-    return data
+def _add_script(entries, index, add, starts):
+    """A script's starts as entries after it; a start left out (a duplicate,
+    a placeholder) takes no time: what waited for it counts from its own start."""
+    script = entries[index]['script']
+    placed = []             # per start: its entry index, or its (since, after) if left out
+    for start in starts:
+        since, after = start['since'], start['after']
+        if since is not None:
+            waited = placed[since[1]]
+            if isinstance(waited, tuple):
+                since, after = waited[0], waited[1] + after
+            else:
+                since = ('end', waited)
+        at = add(_clean(start['command']), script, start['cwd'], of=index,
+                 start={'after': after, 'since': since})
+        placed.append((since, after) if at is None else at)

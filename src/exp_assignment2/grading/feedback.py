@@ -14,7 +14,7 @@ import os
 import re
 
 from exp_assignment2.grading import report_failures, report_judged, report_packages, \
-    report_releases, verdicts
+    report_releases, report_starts, verdicts
 from exp_assignment2.grading.report_marks import _number
 
 WORDS = {
@@ -102,9 +102,12 @@ def to_fix(summary, run, clean):
             'The build failed' if verdict == 'not_built' else 'This command started nothing',
             _e(clean(summary['reason']))))
     for c in run.get('readme_commands') or []:
-        if not c.get('ran'):
+        if not c.get('ran') and c.get('kind') != 'build':     # the grader builds: no fault
             items.append('Your README\'s command <code>%s</code> was not run: %s' % (
                 _e(clean(c['command'])), _e(clean(c.get('why')))))
+        elif c.get('corrected'):        # it names what the package does not have
+            items.append('Your README\'s command <code>%s</code> names what your package does '
+                         'not have: %s' % (_e(clean(c['command'])), _e(clean(c.get('why')))))
     for e in run.get('launch_errors') or []:
         items.append('roslaunch could not start a node (<code>%s</code>): %s' % (
             _e(clean(e.get('command'))), _e(clean(e.get('line')))))
@@ -180,8 +183,7 @@ def page(summary, run, pictures, profile, clean):
                              report_judged.why_html(clean(c['detail']))))
         parts.append('</table>')
     parts += report_judged.judged_section(run, shown, 'What the grader judged')
-    parts.append('<h2>How it was started</h2><pre>%s</pre>' % _e(clean(
-        '\n'.join(run.get('commands') or []))))
+    parts.append('<h2>How it was started</h2>' + report_starts.table(run, clean))
     parts += report_packages.packages_section(run, clean)
     parts += report_releases.releases_section(run, summary.get('releases'), clean)
     pics = [(k, pictures.get(k)) for k in ('top', 'head')] + \

@@ -3,16 +3,19 @@
     /usr/bin/python3 inside.py PLAN.json
 
 The plan (written by :mod:`exp_assignment2.grading.runner`) gives the
-package, the commands and the delay between them. The driver makes the
-original-code environment for the package once
+package, the commands and their start plan (:mod:`exp_assignment2.grading.starts`:
+when each starts, counted from the master, another's start or another's end,
+and the folder it runs in). The driver makes the original-code environment
+for the package once
 (:func:`exp_assignment2.original_env.environment.environment`: the package
 built in its overlay, its messages in ``logs/build.log``), starts a master,
-then each command in that environment, a few seconds apart, each in a
+then each command in that environment when the plan says, each in a
 process group of its own with its output in ``logs/``. It reports what
 happens as JSON lines on its standard output (``display``, ``built``, ``master``,
-``started``, ``exited``, ``stopping``, ``ended``) and ends every command,
-gently then not, when the grader writes ``stop`` on its standard input or
-closes it.
+``started`` with ``at``: s after the master was up, and ``cwd``; ``exited``;
+``never_started``: a command whose shell still waited at the end;
+``stopping``, ``ended``) and ends every command, gently then not, when the
+grader writes ``stop`` on its standard input or closes it.
 
 The student's package may be called ``exp_assignment2`` too: this
 repository's ``src`` comes first on sys.path, so the library is ours.
@@ -99,12 +102,13 @@ def start_display(plan):
     return procs
 
 
-def start(plan, env, argv, log_name):
-    """``argv`` started in ``env``, in a process group of its own, its output
-    in logs/LOG_NAME (where an OSError, such as no such program, is said too)."""
+def start(plan, env, argv, log_name, cwd=None):
+    """``argv`` started in ``env`` (in folder ``cwd``), in a process group of
+    its own, its output in logs/LOG_NAME (where an OSError, such as no such
+    program, is said too)."""
     log = open(os.path.join(plan['logs'], log_name), 'wb')
     try:
-        return subprocess.Popen(argv, stdout=log, stderr=subprocess.STDOUT, env=env,
+        return subprocess.Popen(argv, stdout=log, stderr=subprocess.STDOUT, env=env, cwd=cwd,
                                 stdin=subprocess.DEVNULL, start_new_session=True)
     except OSError as exc:
         log.write(('%s: %s\n' % (argv[0], exc.strerror or exc)).encode())
@@ -139,6 +143,65 @@ def end_all(procs):
                 pass
 
 
+def _plan_starts(plan):
+    """The plan's starts (:mod:`exp_assignment2.grading.starts`); a plan
+    written before there were any: its commands ``delay`` apart."""
+    from exp_assignment2.grading import starts
+    return plan.get('starts') or [dict(s, dir=None) for s in starts.typed(
+        plan['commands'], plan['delay'])]
+
+
+def follow_plan(plan, env, stop):
+    """Each command started when the plan says (:func:`starts.follow`), in
+    its folder, until ``stop``; ([(index, command, process)], {exited index})."""
+    if SRC not in sys.path:
+        sys.path.insert(0, SRC)
+    from exp_assignment2.grading import starts
+    plan_starts = _plan_starts(plan)
+    schedule = starts.Schedule(plan_starts, time.monotonic())
+    commands, exited = [], set()
+
+    def launch(i, at):
+        entry = plan_starts[i]
+        command, folder = entry['command'], entry.get('dir')
+        where = dict(cwd=entry.get('cwd') or '', after=entry.get('after'),
+                     since=entry.get('since'), at=round(at, 3))
+        if not folder or not os.path.isdir(folder):
+            folder = plan['package']
+        try:
+            words = shlex.split(command)
+        except ValueError as exc:
+            emit('exited', index=i, command=command, rc=None, error=str(exc), **where)
+            return False
+        if not words:
+            emit('exited', index=i, command=command, rc=None, error='an empty command', **where)
+            return False
+        try:
+            proc = start(plan, env, words, 'command-%d.log' % i, cwd=folder)
+        except OSError as exc:      # no such program: as the shell's exec said
+            emit('exited', index=i, command=command, rc=127, error=str(exc), **where)
+            return False
+        commands.append((i, command, proc))
+        emit('started', index=i, command=command, pid=proc.pid, **where)
+        return True
+
+    def poll_exits():
+        ended = [i for i, _, proc in commands if i not in exited and proc.poll() is not None]
+        exited.update(ended)
+        return ended
+
+    def told_exits(ended):
+        for i, command, proc in commands:
+            if i in ended:
+                emit('exited', index=i, command=command, rc=proc.returncode)
+    starts.follow(schedule, launch, poll_exits, told_exits, stop, time.monotonic)
+    for i in schedule.never_started():     # a shell still waiting for what it ran
+        entry = plan_starts[i]
+        emit('never_started', index=i, command=entry['command'], cwd=entry.get('cwd') or '',
+             after=entry.get('after'), since=entry.get('since'))
+    return commands, exited
+
+
 def main(argv):
     with open(argv[0]) as f:
         plan = json.load(f)
@@ -168,33 +231,7 @@ def main(argv):
     while not master_up() and time.monotonic() < deadline and not stop.wait(0.2):
         pass      # the master's port is all there is to watch
     emit('master', up=master_up())
-    commands, exited = [], set()
-    for i, command in enumerate(plan['commands']):
-        if stop.is_set():
-            break
-        if i:
-            stop.wait(plan['delay'])
-        try:
-            words = shlex.split(command)
-        except ValueError as exc:
-            emit('exited', index=i, command=command, rc=None, error=str(exc))
-            continue
-        if not words:
-            emit('exited', index=i, command=command, rc=None, error='an empty command')
-            continue
-        try:
-            proc = start(plan, env, words, 'command-%d.log' % i)
-        except OSError as exc:      # no such program: as the shell's exec said
-            emit('exited', index=i, command=command, rc=127, error=str(exc))
-            continue
-        commands.append((i, command, proc))
-        emit('started', index=i, command=command, pid=proc.pid)
-    while not stop.is_set():
-        for i, command, proc in commands:
-            if i not in exited and proc.poll() is not None:
-                exited.add(i)
-                emit('exited', index=i, command=command, rc=proc.returncode)
-        stop.wait(0.5)
+    commands, exited = follow_plan(plan, env, stop)
     emit('stopping')
     end_all([proc for _, _, proc in reversed(commands)] + procs)
     end_all(shown)          # the display last: the student's windows close first

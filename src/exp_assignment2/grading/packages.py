@@ -164,8 +164,8 @@ def choose(packages, main, commands, also=()):
         if package.name not in by_name or package is main:
             by_name[package.name] = package
     names = set(by_name)
-    wanted = [main.name] + [n for n in also if n in names]
-    wanted += [n for n in (_started(c, list(by_name.values()), None) for c in commands) if n]
+    started = [n for n in (_started(c, list(by_name.values()), None) for c in commands) if n]
+    wanted = [main.name] + [n for n in also if n in names] + started
     uses = {}
     needed, queue = set(), list(wanted)
     while queue:
@@ -180,10 +180,11 @@ def choose(packages, main, commands, also=()):
     for package in packages:
         chosen = by_name.get(package.name) is package and package.name in needed
         if chosen:
+            users = sorted(n for n in needed if package.name in uses.get(n, ()))
             why = 'built: %s' % ('the run is about it' if package is main else
-                                 'the run starts it' if package.name in wanted else
-                                 'used by %s' % ', '.join(sorted(
-                                     n for n in needed if package.name in uses.get(n, ()))))
+                                 'the run starts it' if package.name in started else
+                                 'used by %s' % ', '.join(users) if users else
+                                 "the README's build line names it")
         elif by_name.get(package.name) is not package:
             why = 'not built: another package named %s (%s) is, as catkin takes one' % (
                 package.name, by_name[package.name].rel)

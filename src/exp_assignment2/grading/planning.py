@@ -19,10 +19,11 @@ import shutil
 import tempfile
 
 from exp_assignment2.grading import assignment, build_deps, launch_nodes, profiles, ros_release
+from exp_assignment2.grading import starts
 from exp_assignment2.grading import packages as packages_
-from exp_assignment2.grading.choose import Context, choose, own_has
+from exp_assignment2.grading.choose import Context, aliases, choose
 from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, \
-    readme_entries
+    readme_entries, readme_text
 from exp_assignment2.grading.paths import REPO
 from exp_assignment2.grading.spec import RunSpec, settings
 from exp_assignment2.grading.submissions import SubmissionError, discover, unpack
@@ -41,11 +42,15 @@ def _put_in(command, package, sim=None):
 
 def resolve(package_dir, package, name, teacher, profile, provided, read_launches, root=None,
             packages=None, other_parts=None):
-    """{'commands', 'commands_from', 'readme_commands', 'notes'} for one
-    submission (see the module's docstring). ``read_launches(requests,
-    packages)``: the launch files' nodes (launch_nodes.read, or a test's).
-    ``root``: the submission's folder (its README is read there first, then
-    in ``package_dir``); ``packages``: {name: folder} of all its packages;
+    """{'commands', 'starts', 'build_packages', 'commands_from',
+    'readme_commands', 'notes'} for one submission (see the module's
+    docstring; ``starts``: when each command starts and from which folder,
+    :mod:`.starts`; ``build_packages``: the submission's packages its
+    README's build lines name). ``read_launches(requests, packages)``: the
+    launch files' nodes (launch_nodes.read, or a test's). ``root``: the
+    submission's folder (its README is read there first, then in
+    ``package_dir``; the commands' folders are relative to it);
+    ``packages``: {name: folder} of all its packages;
     ``other_parts(entries, readme_text)``: {command: why} of the README's
     commands about another assignment (assignment.other_sections)."""
     root = root or package_dir
@@ -53,41 +58,55 @@ def resolve(package_dir, package, name, teacher, profile, provided, read_launche
     # this package's name beside the student's: exp_assignment2_sim if theirs is called so
     sim = SIM_PACKAGE if OWN_NAME in own_packages else OWN_NAME
     own = (teacher.get('submissions') or {}).get(name) or {}
-    listed, notes = [], []
-    if own.get('commands'):
-        commands, source = own['commands'], 'grading.yaml (submissions: %s)' % name
-    elif teacher.get('commands'):
-        commands, source = teacher['commands'], 'grading.yaml (commands)'
+    ctx = Context(package, package_dir, provided, world=bool(profile['world_commands']),
+                  root=root, packages=own_packages)
+    delay = float(profile.get('delay', 5))
+    world = [_put_in(c, package, sim) for c in profile['world_commands']]
+    listed, notes, builds = [], [], []
+    if own.get('commands') or teacher.get('commands'):
+        chosen = own.get('commands') or teacher['commands']
+        source = 'grading.yaml (submissions: %s)' % name if own.get('commands') else \
+            'grading.yaml (commands)'
+        written = [_put_in(c, package, sim) if isinstance(c, str) else
+                   dict(c, run=_put_in(c['run'], package, sim)) for c in chosen]
+        plan = starts.typed(world, delay) + starts.from_teacher(written, delay, len(world))
+        for start in plan:
+            if start['cwd'] and not os.path.isdir(os.path.join(root, start['cwd'])):
+                notes.append('`%s`: cwd %s is not a folder of the submission: run from its '
+                             'root' % (start['command'], start['cwd']))
+                start['cwd'] = ''
     else:
-        entries, readme, where = readme_entries(root) + (root,)
-        if readme is None and root != package_dir:
-            entries, readme, where = readme_entries(package_dir) + (package_dir,)
-        others = other_parts(entries, _text(os.path.join(where, readme))) \
+        entries, readme = readme_entries(root, package_dir, ctx.packages)
+        others = other_parts(entries, readme_text(root, package_dir)) \
             if other_parts and readme else {}
-        skipped = [e for e in entries if e['command'] in others]
-        entries = [e for e in entries if e['command'] not in others]
-        ctx = Context(package, package_dir, provided, world=bool(profile['world_commands']))
-        packages = dict(own_packages)
-        packages[sim] = REPO
-        for entry in entries:       # $(find NAME) for the name the README gives it too
-            words = entry['command'].split()
-            if entry['kind'] == 'ros' and len(words) > 2 and words[1] not in provided \
-                    and own_has(ctx, words):
-                packages.setdefault(words[1], package_dir)
-        commands, listed = choose(entries, ctx, lambda requests: read_launches(
-            requests, packages))
-        listed += [{'command': e['command'], 'ran': False, 'why': others[e['command']]}
-                   for e in skipped]
+        skipped = set()
+        for index, entry in enumerate(entries):     # another assignment's: left out, in place
+            if entry['command'] in others or entry.get('of') in skipped:
+                skipped.add(index)
+                entry['left_out'] = others.get(entry['command']) or \
+                    entries[entry['of']]['left_out']
+        launch_packages = dict(ctx.packages, **{sim: REPO})
+        for alias, folder in aliases(entries, ctx).items():    # $(find NAME) for that name too
+            launch_packages.setdefault(alias, folder)
+        runs, listed = choose(entries, ctx, lambda requests: read_launches(
+            requests, launch_packages))
+        for entry in entries:
+            builds += [p for p in entry.get('packages') or [] if p in ctx.packages]
         for item in listed:         # what differs from running every line: a note each
-            if item['why'] and not item['why'].startswith('a start script: its'):
+            if item['why'] and item['kind'] != 'build' and \
+                    not item['why'].startswith('a start script: its'):
                 notes.append('`%s`: %s' % (item['command'], item['why']))
         source = "the submission's %s" % readme
-        if not commands:
+        if runs:
+            plan = starts.from_readme(world, runs, entries, delay)
+        else:
             notes.append('no roslaunch or rosrun line to run in %s: the profile\'s default'
                          % (readme or 'a README (there is none)'))
-            commands, source = profile['default_commands'], "the profile's default"
-    world = [_put_in(c, package, sim) for c in profile['world_commands']]
-    return {'commands': world + [_put_in(c, package, sim) for c in commands],
+            source = "the profile's default"
+            plan = starts.typed(world + [_put_in(c, package, sim) for c in
+                                         profile['default_commands']], delay)
+    return {'commands': starts.commands_of(plan), 'starts': plan,
+            'build_packages': list(dict.fromkeys(builds)),
             'commands_from': source + (" after the profile's world" if world else ''),
             'readme_commands': listed, 'notes': notes}
 

@@ -16,7 +16,8 @@ import shutil
 import statistics
 
 from exp_assignment2.grading import feedback, figures, gradescope, metrics, record, \
-    report_failures, report_judged, report_marks, report_packages, report_releases
+    report_failures, report_judged, report_marks, report_packages, report_releases, \
+    report_starts
 from exp_assignment2.grading import roles as roles_
 from exp_assignment2.grading.logs import read_log
 from exp_assignment2.grading.report_camera import camera_section, window_pictures
@@ -150,8 +151,8 @@ def _page(summary, runs, runs_dir, pictures, profile):
     if summary['flaky']:
         parts.append('<p class="flaky">flaky: the repeats ended %s</p>'
                      % _e(', '.join(summary['verdicts'])))
-    parts.append('<h2>Started with</h2><p>from %s</p><pre>%s</pre>' % (
-        _e(main.get('commands_from')), _e('\n'.join(main.get('commands') or []))))
+    parts.append('<h2>Started with</h2><p>from %s</p>%s' % (
+        _e(main.get('commands_from')), report_starts.table(main)))
     for note in main.get('notes') or []:
         parts.append('<p>note: %s</p>' % _e(note))
     parts += report_packages.packages_section(main)
@@ -161,7 +162,8 @@ def _page(summary, runs, runs_dir, pictures, profile):
                      '<th>why</th></tr>' + ''.join(
                          '<tr><td><code>%s</code>%s</td><td>%s</td><td>%s</td></tr>' % (
                              _e(c['command']), ' (in %s)' % _e(c['from']) if c.get('from')
-                             else '', 'ran' if c['ran'] else 'left out', _e(c['why']))
+                             else '', 'ran' if c['ran'] else 'a build step' if c.get(
+                                 'kind') == 'build' else 'left out', _e(c['why']))
                          for c in main['readme_commands']) + '</table>')
     for cut in main.get('cut') or []:     # what its worker did not send back whole
         parts.append('<p>cut from what the worker sent back: %s</p>' % _e(cut))

@@ -73,9 +73,19 @@ class Run(object):
         os.chmod(self.sockets, 0o755)
 
     def _plan(self, package_dir, more=(), root=None):
-        plan = {'package': package_dir, 'more': list(more), 'root': root or package_dir,
-                'commands': self.spec.commands,
-                'delay': float(self.settings.profile['delay']),
+        """plan.json for the driver: the packages, the commands and their
+        start plan (a spec without one: ``delay`` apart), each start's
+        folder made a path in this run, inside the submission's ``root``."""
+        from exp_assignment2.grading import starts     # this method is its one user here
+        delay = float(self.settings.profile['delay'])
+        root = os.path.normpath(root or package_dir)
+        plan_starts = [dict(s) for s in (self.spec.starts or starts.typed(self.spec.commands,
+                                                                          delay))]
+        for start in plan_starts:
+            folder = os.path.normpath(os.path.join(root, start.get('cwd') or ''))
+            start['dir'] = folder if (folder + os.sep).startswith(root + os.sep) else root
+        plan = {'package': package_dir, 'more': list(more), 'root': root,
+                'commands': self.spec.commands, 'delay': delay, 'starts': plan_starts,
                 'logs': os.path.join(self.work, 'logs')}
         path = os.path.join(self.work, 'plan.json')
         with open(path, 'w') as f:

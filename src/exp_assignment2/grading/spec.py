@@ -10,25 +10,29 @@ key (:func:`settings`).
 FIELDS = ('name', 'path', 'kind', 'label', 'seed', 'profile', 'duration',
           'real_time_factor', 'hidden', 'version', 'package', 'commands', 'commands_from',
           'readme_commands', 'notes', 'refused', 'packages', 'build', 'debian', 'rejected',
-          'release', 'release_why', 'releases_next')
+          'release', 'release_why', 'releases_next', 'starts', 'build_packages')
 
 
 class RunSpec(object):
     """One run's specification. ``commands`` are exactly what the run
     starts (the profile's world first, ``{package}``/``{sim}`` put in);
-    ``readme_commands``: every command the README gives, each
-    ``{'command', 'ran', 'why'}``; ``refused``: why the run must not run
-    (a mistake in the teacher's settings for it, or the grader's own
-    failure to read it: ``grader_error``), or None; ``rejected``: why the
-    submission cannot be taken at all (``not_built``: it does not unpack, it
-    holds no package, it is not a folder or an archive), or None;
-    ``packages``: every package found, each ``{'name', 'rel', 'built',
-    'why'}``; ``build``: the folders (relative to the submission's root) of
-    those the run builds, the main one first; ``debian``: what the build
-    needs from Debian (installed before the run, outside its sandbox);
-    ``release``: the ROS release the simulator plays (None: the teacher's
-    environment's), ``release_why``, and ``releases_next``: those to run it
-    in when its checks fail in this one (:mod:`.ros_release`)."""
+    ``starts``: the same commands with when each starts and from which
+    folder (:mod:`.starts`; empty: ``delay`` apart, as before there were
+    plans); ``readme_commands``: every command the README gives, each
+    ``{'command', 'ran', 'why', 'kind'}``; ``build_packages``: the
+    submission's packages its README's build lines name; ``refused``: why
+    the run must not run (a mistake in the teacher's settings for it, or the
+    grader's own failure to read it: ``grader_error``), or None;
+    ``rejected``: why the submission cannot be taken at all (``not_built``:
+    it does not unpack, it holds no package, it is not a folder or an
+    archive), or None; ``packages``: every package found, each ``{'name',
+    'rel', 'built', 'why'}``; ``build``: the folders (relative to the
+    submission's root) of those the run builds, the main one first;
+    ``debian``: what the build needs from Debian (installed before the run,
+    outside its sandbox); ``release``: the ROS release the simulator plays
+    (None: the teacher's environment's), ``release_why``, and
+    ``releases_next``: those to run it in when its checks fail in this one
+    (:mod:`.ros_release`)."""
 
     def __init__(self, **fields):
         unknown = set(fields) - set(FIELDS)
@@ -38,7 +42,7 @@ class RunSpec(object):
                     'commands_from': '', 'readme_commands': [], 'notes': [], 'refused': None,
                     'real_time_factor': 1.0, 'label': None, 'packages': [], 'build': [],
                     'debian': [], 'rejected': None, 'release': None, 'release_why': '',
-                    'releases_next': []}
+                    'releases_next': [], 'starts': [], 'build_packages': []}
         for key in FIELDS:
             value = fields.get(key, defaults.get(key))
             setattr(self, key, list(value) if isinstance(value, (list, tuple)) else value)
