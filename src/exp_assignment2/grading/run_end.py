@@ -30,12 +30,13 @@ SIMULATOR_WAIT = 90.0   # wall s after the build for the first ground truth, plu
 class RunFacts(object):
     """What the monitor knows of a run at one look (see the module)."""
 
-    def __init__(self, duration, wall_limit, started_at, commands=1, delay=0.0,
+    def __init__(self, duration, wall_limit, started_at, starts_span=0.0,
                  build_limit=BUILD_LIMIT):
         self.duration, self.wall_limit = float(duration), float(wall_limit)
         self.started_at, self.build_limit = started_at, build_limit
-        # the commands start delay s apart before the simulator can be expected
-        self.simulator_wait = SIMULATOR_WAIT + commands * delay
+        # the commands start over starts_span s (starts.span: a script's sleeps and
+        # terminals, a README's delay) before the simulator can be expected
+        self.simulator_wait = SIMULATOR_WAIT + float(starts_span)
         self.built_at = None          # when the driver said the build ended
         self.cancelled = False
         self.truth = None             # (simulated s, wall time) of the latest ground truth

@@ -13,7 +13,7 @@ import subprocess
 import threading
 import time
 
-from exp_assignment2.grading import build_deps, cpu, logs, record, run_end, verdicts
+from exp_assignment2.grading import build_deps, cpu, logs, record, run_end, starts, verdicts
 from exp_assignment2.grading import packages as packages_
 from exp_assignment2.grading.paths import INSIDE, REPO
 from exp_assignment2.grading.run_files import directory_size, log_sizes, waits_on_wall_clock
@@ -215,9 +215,10 @@ class Run(object):
         reader.start()
         duration = self.settings.duration
         t0 = time.monotonic()
+        span = starts.span(self.spec.starts) if self.spec.starts else \
+            len(self.spec.commands) * self.settings.profile['delay']
         facts = run_end.RunFacts(duration, duration / (rtf if rtf > 0 else 1.0) * 1.5 +
-                                 START_SLACK, t0, len(self.spec.commands),
-                                 self.settings.profile['delay'])
+                                 START_SLACK, t0, span)
         required = logs.RequiredWatch(self.work)
         ending = None
         self.state = 'building'
