@@ -41,7 +41,7 @@ import exp2_py2_read
 
 ENV = 'EXP2_KEYBOARD'
 NOTICE = '[original-env] waited for keyboard input at %s\n'
-_HERE = os.path.abspath(__file__)
+_HERE = __file__  # as in its code objects
 
 
 class KeyboardError(ValueError):
@@ -77,10 +77,14 @@ def lines_to_type(value, argv):
         data = json.loads(value)
     except ValueError as exc:
         raise KeyboardError('not JSON: %s' % exc)
+    shape = ('expected a list of {"at": SECONDS, "text": "..."}, or an object of such lists '
+             'by node name, script name or "*"')
     if isinstance(data, dict):
+        if not all(isinstance(v, list) for v in data.values()):
+            raise KeyboardError(shape)
         data = next((data[k] for k in _process_keys(argv) if k in data), [])
     if not isinstance(data, list):
-        raise KeyboardError('expected a list of {"at": SECONDS, "text": "..."}')
+        raise KeyboardError(shape)
     found = []
     for item in data:
         at = item.get('at') if isinstance(item, dict) else None
@@ -106,13 +110,13 @@ def shown(path):
 
 
 def program_frame(frame):
-    """The innermost frame of the program's own code from ``frame`` out, or None."""
-    while frame is not None:
-        name = frame.f_code.co_filename
-        if name != _HERE and not exp2_py2_read.is_system_path(name):
-            return frame
+    """The frame that called this module, from ``frame`` out, if it is the program's own
+    code (not the interpreter's libraries nor an installed package's); else None."""
+    while frame is not None and frame.f_code.co_filename == _HERE:
         frame = frame.f_back
-    return None
+    if frame is None or exp2_py2_read.is_system_path(frame.f_code.co_filename):
+        return None
+    return frame
 
 
 class KeyboardStdin(object):
@@ -272,6 +276,8 @@ def install():
     terminal (idempotent), and have ``input`` tell it the prompt."""
     if _stdin_is_terminal() or isinstance(sys.stdin, KeyboardStdin):
         return
+    import exp2_hidden_frames
+    exp2_hidden_frames.hide(_HERE, and_below=True)  # a Ctrl-C ends on the student's line
     stdin = sys.stdin = KeyboardStdin(sys.stdin)
     real_input = builtins.input
 

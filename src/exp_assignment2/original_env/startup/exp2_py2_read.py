@@ -58,7 +58,7 @@ def is_system_path(path):
     """Is ``path`` a file of the interpreter's own libraries, of an installed
     package (site-packages, dist-packages, the system's programs, /opt/ros) or
     of this environment's start-up?"""
-    if not path or path.startswith('<'):
+    if not path or path.startswith('<frozen'):
         return True
     path = os.path.abspath(path)
     return (path.startswith(_SYSTEM) or os.sep + 'dist-packages' + os.sep in path or

@@ -15,9 +15,7 @@ through one builtin name (``install``) so that no line is added to the file:
   dropped (``string.join(words, sep)``, ``string.atoi``, ``string.split``, ...).
 
 A traceback through these functions (``7 / 0``) shows the student's line
-last, as Python 2's did: ``install`` has the tracebacks printed by
-``sys.excepthook``, ``threading.excepthook`` and the ``traceback`` module
-(rospy's callback errors) leave out this module's frames.
+last, as Python 2's did (exp2_hidden_frames.py).
 """
 import builtins
 import decimal
@@ -126,65 +124,10 @@ string = types.SimpleNamespace(
     join=_join, joinfields=_join, zfill=_zfill)
 
 
-def _own(tb):
-    return tb.tb_frame.f_code.co_filename == __file__
-
-
-def _hidden(exc, seen=None):
-    """``exc`` with this module's frames unlinked from its traceback (and its causes')."""
-    seen = set() if seen is None else seen
-    if exc is None or id(exc) in seen:
-        return exc
-    seen.add(id(exc))
-    tb = exc.__traceback__
-    while tb is not None and _own(tb):
-        tb = tb.tb_next
-    first = tb
-    while tb is not None:
-        while tb.tb_next is not None and _own(tb.tb_next):
-            tb.tb_next = tb.tb_next.tb_next
-        tb = tb.tb_next
-    exc.__traceback__ = first
-    _hidden(exc.__cause__, seen)
-    _hidden(exc.__context__, seen)
-    return exc
-
-
-def _hiding_hook(hook):
-    def excepthook(exc_type, value, tb):
-        if isinstance(value, BaseException):
-            tb = _hidden(value.with_traceback(tb)).__traceback__
-        return hook(exc_type, value, tb)
-    excepthook.exp2_hides_runtime = True
-    return excepthook
-
-
-def _hiding_walk(walk):
-    def walk_without_runtime(tb, *args, **kwargs):
-        for item in walk(tb, *args, **kwargs):
-            frame = item[0]
-            if frame.f_code.co_filename != __file__:
-                yield item
-    walk_without_runtime.exp2_hides_runtime = True
-    return walk_without_runtime
-
-
 def install():
     """Make this module the builtin ``_exp2_py2``, its frames left out of tracebacks
     (idempotent)."""
     import sys
-    import threading
-    import traceback
-    if getattr(builtins, NAME, None) is sys.modules[__name__]:
-        return
+    import exp2_hidden_frames
     setattr(builtins, NAME, sys.modules[__name__])
-    sys.excepthook = _hiding_hook(sys.excepthook)
-    hook = threading.excepthook
-
-    def thread_hook(args):
-        _hidden(args.exc_value)
-        return hook(args)
-    threading.excepthook = thread_hook
-    for name in ('walk_tb', '_walk_tb_with_full_positions'):
-        if hasattr(traceback, name):
-            setattr(traceback, name, _hiding_walk(getattr(traceback, name)))
+    exp2_hidden_frames.hide(__file__)
