@@ -171,3 +171,23 @@ def test_catkin_relay_scripts_read_python2(shell):
         assert proc.returncode == 0, proc.stderr
         assert proc.stdout.splitlines() == NODE_OUTPUT + ['argv relayed']
         assert proc.stderr == LINE + '%s, %s\n' % (work / 'node.py', work / 'helper.py')
+
+
+def test_a_package_module_imports_its_sibling_as_python2_did(shell):
+    """Python 2's implicit relative import: ``import b`` in package ``pkg`` found pkg/b.py."""
+    env, work = shell
+    (work / 'pkg').mkdir()
+    (work / 'pkg' / '__init__.py').write_text('')
+    (work / 'pkg' / 'a.py').write_text('import b\nprint "a sees", b.NAME\n')
+    (work / 'pkg' / 'b.py').write_text('NAME = "pkg.b"\n')
+    proc = run(['python3', '-c', 'import pkg.a'], env, work)
+    assert (proc.returncode, proc.stdout) == (0, 'a sees pkg.b\n'), proc.stderr
+
+
+def test_without_fissix_the_standard_librarys_2to3_translates(shell):
+    """fissix caches its grammar in the user's cache: where it cannot, lib2to3 does the work."""
+    env, work = shell
+    code = 'import exp2_py2_translate as t; print(t.BACKEND); import helper; helper.table({})'
+    proc = run(['python3', '-c', code], dict(env, XDG_CACHE_HOME='/proc/no-cache'), work)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.splitlines()[0] == 'lib2to3' and proc.stderr == LINE + 'helper.py\n'

@@ -21,10 +21,12 @@ with warnings.catch_warnings():
     warnings.simplefilter('ignore', DeprecationWarning)  # lib2to3 of Python 3.9 to 3.12
     warnings.simplefilter('ignore', PendingDeprecationWarning)
     try:
+        # fissix caches its grammar under the user's cache directory: a home it
+        # cannot write (a read-only sandbox) makes its import fail, lib2to3's does not
         import fissix as lib
         from fissix import refactor
         from fissix.pgen2 import parse as _parse, token as _token, tokenize as _tokenize
-    except ImportError:
+    except Exception:
         import lib2to3 as lib
         from lib2to3 import refactor
         from lib2to3.pgen2 import parse as _parse, token as _token, tokenize as _tokenize
