@@ -7,7 +7,8 @@ statements, a Python 2 helper module, integer division, a rospy timer, and
 starts commands). roslaunch (its own master on a free port, ``output="screen"``) runs it
 with one line to type (EXP2_KEYBOARD, by node name); then rosrun starts a second one
 beside it, with another. Each must print what Python 2 printed, get its line at its
-time, then wait for the keyboard while its timer goes on, until it is stopped.
+time, then wait for the keyboard while its timer goes on, until SIGINT (rospy's
+shutdown) ends it.
 """
 import os
 import shutil
@@ -144,4 +145,6 @@ def test_a_python2_node_runs_and_waits_for_the_keyboard(package, tmp_path):
         assert waited > got and PROMPT in '\n'.join(lines[got:waited]), lines
         assert ('tick ' + name) in lines[waited + 1:], lines    # its timer goes on
         assert not [line for line in lines if 'Error' in line], lines
+    # stopping it shuts rospy down, which ends the wait: no need for SIGTERM
+    assert 'escalating to SIGTERM' not in launched, launched
     assert proc.returncode == 0, proc.stdout[-3000:]

@@ -109,6 +109,27 @@ def test_ros_time_once_rospy_is_initialised(monkeypatch):
     assert clock['now'] >= 12.0
 
 
+def test_rospys_shutdown_ends_the_wait(monkeypatch):
+    """rospy's SIGINT handler swallows Ctrl-C's KeyboardInterrupt: its shutdown ends the wait."""
+    hooks, state = [], {'down': False}
+    core = types.SimpleNamespace(is_initialized=lambda: True, add_preshutdown_hook=hooks.append,
+                                 is_shutdown_requested=lambda: state['down'],
+                                 is_shutdown=lambda: state['down'])
+    monkeypatch.setitem(sys.modules, 'rospy', types.SimpleNamespace(core=core))
+    stdin = exp2_keyboard.KeyboardStdin(io.StringIO(''), [])
+
+    def shut_down():
+        while not hooks:
+            time.sleep(0.01)
+        state['down'] = True
+        hooks[0]('signal-2')
+    threading.Thread(target=shut_down, daemon=True).start()
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        stdin.readline()
+    assert time.monotonic() - start < 0.9      # the hook woke it, not the 1 s look
+
+
 def start(script, tmp_path, env=None, stdin=subprocess.DEVNULL):
     (tmp_path / 'pkg' / 'scripts').mkdir(parents=True, exist_ok=True)
     (tmp_path / 'pkg' / 'package.xml').write_text('<package/>')

@@ -13,8 +13,10 @@ dies of an EOFError. Here such a node waits as on a terminal nobody types into:
   thread for good when standard input gives end-of-file before any data
   (/dev/null, an empty file or pipe, a closed descriptor). Other threads
   (rospy's callbacks and timers) go on; Ctrl-C (SIGINT, a KeyboardInterrupt
-  in the main thread) and signals end the process as on a terminal. One line
-  says where, once:
+  in the main thread) and signals end the process as on a terminal, and so
+  does rospy's shutdown (which swallows Ctrl-C's KeyboardInterrupt) in a
+  node that initialised rospy: the wait ends with a KeyboardInterrupt. One
+  line says where, once:
   ``[original-env] waited for keyboard input at scripts/command_request.py:37``
   (the file relative to its ROS package, and the line of the call);
 * unless lines to type are given in ``EXP2_KEYBOARD`` (below): each is
@@ -129,7 +131,8 @@ class KeyboardStdin(object):
         self._had_data = False
         self._typed = ''                # typed and not read yet
         self._lock = threading.RLock()
-        self._never = threading.Event()
+        self._stopped = threading.Event()       # rospy has shut down
+        self._hooked = False
         self._told = False
         self._start = time.monotonic()
         self.prompt = ''
@@ -203,10 +206,11 @@ class KeyboardStdin(object):
             self._tell(program_frame(sys._getframe(1)))
             self._lock.release()
             try:
-                while True:
-                    self._never.wait(3600)
+                while not self._rospy_shut_down():
+                    self._stopped.wait(1.0)     # the shutdown hook sets it; 1 s: a late init
             finally:
                 self._lock.acquire()
+            raise KeyboardInterrupt
         at, text = self._lines[0]
         self._wait_until(at)
         del self._lines[0]
@@ -229,13 +233,27 @@ class KeyboardStdin(object):
             pass
         return time.monotonic() - self._start, None
 
+    def _rospy_shut_down(self):
+        """Has rospy, initialised in this process, shut down? (Hears of it from now on.)"""
+        rospy = sys.modules.get('rospy')
+        try:
+            core = rospy.core if rospy is not None else None
+            if core is not None and not self._hooked and core.is_initialized():
+                core.add_preshutdown_hook(lambda reason: self._stopped.set())
+                self._hooked = True
+            return self._hooked and (core.is_shutdown_requested() or core.is_shutdown())
+        except Exception:       # rospy half imported: not initialised
+            return False
+
     def _wait_until(self, at):
         while True:
+            if self._rospy_shut_down():
+                raise KeyboardInterrupt
             now, changed = self._now()
             if now >= at:
                 return
             if changed is None:
-                self._never.wait(min(at - now, 0.5))
+                self._stopped.wait(min(at - now, 0.5))
             else:
                 with changed:
                     changed.wait(0.5)
@@ -264,17 +282,10 @@ def _same_file(a, b):
     return (first.st_dev, first.st_ino) == (second.st_dev, second.st_ino)
 
 
-def _stdin_is_terminal():
-    try:
-        return os.isatty(0)
-    except OSError:
-        return False
-
-
 def install():
     """Put :class:`KeyboardStdin` in ``sys.stdin`` when standard input is not a
     terminal (idempotent), and have ``input`` tell it the prompt."""
-    if _stdin_is_terminal() or isinstance(sys.stdin, KeyboardStdin):
+    if os.isatty(0) or isinstance(sys.stdin, KeyboardStdin):
         return
     import exp2_hidden_frames
     exp2_hidden_frames.hide(_HERE, and_below=True)  # a Ctrl-C ends on the student's line

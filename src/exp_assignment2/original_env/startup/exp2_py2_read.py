@@ -105,7 +105,7 @@ def read(data, path, in_package=False, optimize=-1, tabs=True, python2=True):
             except (SyntaxError, ValueError):
                 pass
             else:
-                if not python2 or not _names_python2(code, source):
+                if not python2 or is_system_path(path) or not _names_python2(code, source):
                     return Reading(source, exp2_code_columns.shift_columns(code, shifts), how)
     translated = _translated(source, path, shifts, in_package, optimize) if python2 else None
     if translated is not None:

@@ -1,4 +1,4 @@
-"""Imports with Python 2's reading of a file (installed by sitecustomize.py in the original-code shell).
+"""Imports read as Python 2 read them (installed by sitecustomize.py in the original-code shell).
 
 ``install()`` replaces the import system's finder for directories by one whose
 loader for ``.py`` files is ``TabRuleLoader``. That loader changes nothing for a
