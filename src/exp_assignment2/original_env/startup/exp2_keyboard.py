@@ -137,10 +137,11 @@ class KeyboardStdin(object):
         self._start = time.monotonic()
         self.prompt = ''
 
-    def __getattr__(self, name):
-        if self._real is None:
+    def __getattr__(self, name):      # the rest is the real standard input's
+        real = self.__dict__.get('_real')
+        if real is None:
             raise AttributeError(name)
-        return getattr(self._real, name)
+        return getattr(real, name)
 
     def isatty(self):
         return False
