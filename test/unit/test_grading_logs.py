@@ -228,3 +228,44 @@ def test_the_simulators_own_log_is_the_graders(tmp_path):
         path.write_text(text)
     sizes = {rel: len(text) for rel, text in files.items()}
     assert logs.simulator_logs(str(tmp_path), sizes) == {'ros_home/log/r/gazebo-1.log'}
+
+
+SYNTAX_AT_START = '''process[dog-5]: started with pid [88]
+[original-env] waited for keyboard input at scripts/command_request.py:37
+  File "/w/src/scripts/dog.py", line 12
+    print "Reached"
+    ^^^^^^^^^^^^^^^
+SyntaxError: Missing parentheses in call to 'print'. Did you mean print(...)?
+[dog-5] process has died [pid 88, exit code 1, cmd /w/src/scripts/dog.py __name:=dog].
+'''
+
+
+def test_a_script_that_cannot_compile_is_a_python_error_with_its_file_and_line():
+    """Python prints a script's SyntaxError without a Traceback line."""
+    (error,) = logs.python_errors([('logs/command-0.log', SYNTAX_AT_START)])
+    assert (error['line'], error['summary']) == (
+        3, "SyntaxError: Missing parentheses in call to 'print'. Did you mean print(...)? "
+           "(/w/src/scripts/dog.py, line 12)")
+    assert error['excerpt'].splitlines()[0] == '  File "/w/src/scripts/dog.py", line 12'
+    indentation = ('  File "x.py", line 4\n    return 3\n              ^\n'
+                   'IndentationError: unindent does not match any outer indentation level\n')
+    (error,) = logs.tracebacks(indentation, 'a')
+    assert error['summary'] == ('IndentationError: unindent does not match any outer '
+                                'indentation level (x.py, line 4)')
+    # said in the command's output and in the node's own log: once
+    assert len(logs.python_errors([('a', SYNTAX_AT_START), ('b', SYNTAX_AT_START)])) == 1
+
+
+def test_a_syntax_error_inside_a_traceback_is_counted_once():
+    text = ('Traceback (most recent call last):\n  File "n.py", line 1, in <module>\n'
+            '    import helper\n  File "/w/helper.py", line 3\n    print "x"\n    ^^^^^^^^^\n'
+            "SyntaxError: Missing parentheses in call to 'print'. Did you mean print(...)?\n")
+    (error,) = logs.tracebacks(text, 'a')
+    assert error['summary'].startswith('SyntaxError: Missing parentheses')
+    assert error['excerpt'].startswith('Traceback')
+
+
+def test_waiting_for_the_keyboard_and_a_file_line_alone_are_no_errors():
+    text = ('[original-env] waited for keyboard input at scripts/command_request.py:37\n'
+            '  File "x.py", line 3\n    not followed by an error\nall done\n')
+    assert logs.python_errors([('logs/command-0.log', text)]) == []

@@ -7,8 +7,9 @@ put where they are run from) and returns it as a dict for ``subprocess``;
 :func:`compute` is its last step, the variables that switch the start-up
 hooks on:
 
-* PYTHONPATH: startup/ first (sitecustomize.py: the tab rule, cv2 HighGUI on
-  one thread, ...), then what was there, then one shim directory per module
+* PYTHONPATH: startup/ first (sitecustomize.py: the tab rule, Python 2 code
+  translated in memory, the keyboard at end-of-file, cv2 HighGUI on one
+  thread, ...), then what was there, then one shim directory per module
   that does not import *now*: smach, smach_ros. Each is checked in a fresh
   interpreter with the shims decided so far (smach_ros needs a smach), so a
   real module is never shadowed; the shims also come last.
@@ -85,6 +86,11 @@ def compute(environ):
         notes.append("tabs: Python 3's rule (EXP2_TAB_RULE=0)")
     else:
         notes.append("tabs: Python 2's rule where Python 3 refuses")
+    notes.append('Python 2: ' + ('as Python 3 (EXP2_PY2=0)' if environ.get('EXP2_PY2') == '0'
+                                 else 'translated in memory'))
+    notes.append('keyboard: ' + ('end-of-file (EXP2_KEYBOARD_WAIT=0)'
+                                 if environ.get('EXP2_KEYBOARD_WAIT') == '0' else
+                                 'waits at end-of-file, as a terminal'))
     if environ.get('EXP2_CV2_GUI_THREAD', '1') == '0':
         notes.append('cv2 GUI: unchanged (EXP2_CV2_GUI_THREAD=0)')
     elif any(environ.get(v) for v in ('DISPLAY', 'WAYLAND_DISPLAY', 'QT_QPA_PLATFORM')):

@@ -4,15 +4,18 @@
 # `#!/usr/bin/env python` scripts, rosrun and roslaunch all start here).
 #
 # It is /usr/bin/python3, except for one case: a script (`python3 [OPTIONS]
-# SCRIPT ARGS`) with a tab in the indentation of some line is started through
-# exp2_tab_script.py (src/exp_assignment2/original_env/startup), which reads it with Python 2's
-# tab rule if Python 3 refuses its indentation. -c, -m, -, no argument,
+# SCRIPT ARGS`) is started through exp2_tab_script.py
+# (src/exp_assignment2/original_env/startup), which reads it as Python 2 did
+# where Python 3 cannot: with Python 2's tab rule if Python 3 refuses its
+# indentation, translated by 2to3's fixers if it is Python 2 code
+# (exp2_py2_read.py), exactly as it is otherwise. -c, -m, -, no argument,
 # --version and the like, -x, and -E/-I (which drop PYTHONPATH, so the
 # original-code shell with it) go to /usr/bin/python3 as they are;
-# EXP2_TAB_RULE=0 turns the tab rule off.
+# EXP2_PY2=0 turns the translation off (then only a script with a tab in its
+# indentation goes through the runner), EXP2_TAB_RULE=0 the tab rule.
 PYTHON=/usr/bin/python3
 
-[ "${EXP2_TAB_RULE:-1}" != 0 ] || exec "$PYTHON" "$@"
+[ "${EXP2_TAB_RULE:-1}" != 0 ] || [ "${EXP2_PY2:-1}" != 0 ] || exec "$PYTHON" "$@"
 
 # Find the script: the first argument that is not an option or an option's value.
 script_at=0 index=0 value_next=
@@ -40,7 +43,8 @@ done
 [ "$script_at" -gt 0 ] && [ "$script_at" -le $# ] || exec "$PYTHON" "$@"
 eval "script=\${$script_at}"
 [ "$script" != - ] && [ -f "$script" ] && [ -r "$script" ] || exec "$PYTHON" "$@"
-LC_ALL=C grep -qs -e "$(printf '^[ \f]*\t')" -- "$script" || exec "$PYTHON" "$@"
+[ "${EXP2_PY2:-1}" != 0 ] || LC_ALL=C grep -qs -e "$(printf '^[ \f]*\t')" -- "$script" \
+  || exec "$PYTHON" "$@"
 
 # The same arguments with `-c 'import exp2_tab_script; ...'` before the script
 # (without a `--` before it: what follows -c CODE is never read as an option).

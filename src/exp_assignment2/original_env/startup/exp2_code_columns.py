@@ -122,3 +122,34 @@ def shift_columns(code, shifts):
     entries = decode(code.co_linetable, code.co_firstlineno)
     table = encode([_shifted(e, shifts) for e in entries], code.co_firstlineno)
     return code.replace(co_consts=consts, co_linetable=table)
+
+
+def relocate(code, line_of, kept, shifts):
+    """``code`` (and the code objects in it) compiled from a translation, placed in the file.
+
+    ``line_of`` maps a line of the translation to the file's line; ``kept``
+    holds the lines of the translation that are the file's line as it is (but
+    for Python 2's tab rule, whose ``shifts`` apply, by the file's line): their
+    columns stay, every other position loses its columns (a traceback then
+    shows the file's line without marks under it, as it cannot point into it).
+    """
+    if not hasattr(code, 'co_positions'):  # before 3.11 (not Debian 12's): the translation's lines
+        return code
+    consts = tuple(relocate(c, line_of, kept, shifts) if hasattr(c, 'co_code') else c
+                   for c in code.co_consts)
+    entries = []
+    for length, line, end_line, col, end_col in decode(code.co_linetable, code.co_firstlineno):
+        if line is not None:
+            new_line = line_of(line)
+            new_end = max(line_of(end_line), new_line) if end_line is not None else new_line
+            if line in kept and end_line in kept:
+                col = None if col is None else max(col + shifts.get(new_line, 0), 0)
+                end_col = None if end_col is None else max(end_col + shifts.get(new_end, 0), 0)
+            else:
+                col = end_col = None
+            line, end_line = new_line, new_end
+        entries.append((length, line, end_line, col, end_col))
+    first = line_of(code.co_firstlineno)
+    return code.replace(co_consts=consts, co_firstlineno=first,
+                        co_linetable=encode(entries, first))
+

@@ -1,4 +1,4 @@
-"""The one stderr line naming the files that were read with Python 2's tab rule.
+"""The stderr lines naming the files that were read as Python 2 read them.
 
 A program reads most of its files in one burst: the script, then what its
 first statements import, and what those import. The line names them together
@@ -8,6 +8,10 @@ part of its imports, or returns; at exit at the latest. A file read later in
 the run (an import inside a function called later) gets its own line then.
 
     [original-env] read with Python 2's tab rule: state_machine.py, helper.py
+    [original-env] read as Python 2 (translated in memory): dog.py
+
+(the first for files only re-indented, the second for files translated by
+2to3's fixers, with the tab rule too where it applied: exp2_py2_read.py).
 
 Statements taken as part of the imports: ``import``, ``from ... import``, a
 string (docstring), ``pass``, ``sys.path.append(...)``/``insert``/``extend``,
@@ -28,26 +32,28 @@ import threading
 import exp2_py2_indent
 
 PREFIX = "[original-env] read with Python 2's tab rule: "
+PREFIXES = {'tabs': PREFIX, 'python2': '[original-env] read as Python 2 (translated in memory): '}
 
 _lock = threading.Lock()
 _pending = []
 _state = {'watching': False, 'atexit': False, 'tracer': None}
 _trees = {}  # file name -> its module's AST (None if unreadable)
 _HERE = os.path.dirname(os.path.abspath(__file__))
-_OWN_FILES = frozenset(os.path.join(_HERE, name) for name in ('exp2_tab_report.py',
-                                                              'exp2_tab_import.py'))
+_OWN_FILES = frozenset(os.path.join(_HERE, name) for name in (
+    'exp2_tab_report.py', 'exp2_tab_import.py', 'exp2_py2_read.py', 'exp2_py2_translate.py'))
 _IMPORTLIB_DIR = os.path.join(os.path.dirname(os.__file__), 'importlib') + os.sep
 _RUNPY = os.path.join(os.path.dirname(os.__file__), 'runpy.py')
 
 
-def note(path, script=False):
-    """Record that ``path`` was read with the tab rule; the line follows (see above).
+def note(path, script=False, how='tabs'):
+    """Record that ``path`` was read as Python 2 read it ('tabs': with the tab rule;
+    'python2': translated); the line follows (see above).
 
     ``script``: ``path`` is a script about to run, not a module being imported.
     """
     with _lock:
-        if path not in _pending:
-            _pending.append(path)
+        if (path, how) not in _pending:
+            _pending.append((path, how))
         if _state['watching']:
             return
         _state['watching'] = True
@@ -68,15 +74,20 @@ def note(path, script=False):
 
 
 def flush():
-    """Write the line for the files recorded so far, if any."""
+    """Write the lines for the files recorded so far, if any."""
     with _lock:
-        names = list(_pending)
+        noted = list(_pending)
         del _pending[:]
         _state['watching'] = False
-    if not names:
+    lines = []
+    for how in ('tabs', 'python2'):
+        names = [_shown(path) for path, kind in noted if kind == how]
+        if names:
+            lines.append(PREFIXES[how] + ', '.join(names) + '\n')
+    if not lines:
         return
     try:
-        sys.stderr.write(PREFIX + ', '.join(_shown(name) for name in names) + '\n')
+        sys.stderr.write(''.join(lines))
         sys.stderr.flush()
     except (AttributeError, OSError, ValueError):  # no stderr, or closed
         pass
@@ -137,12 +148,27 @@ def _watch(frame, event, arg):
 
 def _tree(filename):
     if filename not in _trees:
-        text = ''.join(linecache.getlines(filename))
+        text = exp2_py2_indent.python2_indentation(''.join(linecache.getlines(filename)))[0]
         try:
-            _trees[filename] = ast.parse(exp2_py2_indent.python2_indentation(text)[0], filename)
+            _trees[filename] = ast.parse(text, filename)
         except (SyntaxError, ValueError):
-            _trees[filename] = None
+            _trees[filename] = _translated_tree(text, filename)
     return _trees[filename]
+
+
+def _translated_tree(text, filename):
+    """The AST of the file's translation, on the file's lines (or None)."""
+    import exp2_py2_translate
+    translation = exp2_py2_translate.translate(text, filename)
+    try:
+        tree = ast.parse(translation.text, filename) if translation else None
+    except (SyntaxError, ValueError):
+        return None
+    for node in ast.walk(tree) if tree else ():
+        if getattr(node, 'lineno', None):
+            node.lineno = translation.original_line(node.lineno)
+            node.end_lineno = max(translation.original_line(node.end_lineno), node.lineno)
+    return tree
 
 
 def _statement_at(tree, line):

@@ -1,23 +1,27 @@
-"""Runs a script as ``python3 SCRIPT ARGS`` would, with Python 2's tab rule.
+"""Runs a script as ``python3 SCRIPT ARGS`` would, read as Python 2 did where Python 3 cannot.
 
 The interpreter compiles its script before any start-up hook could help, so
 the ``python`` and ``python3`` of the original-code shell
-(src/exp_assignment2/original_env/programs/python_launcher.sh) start a script whose indentation has a tab as
+(src/exp_assignment2/original_env/programs/python_launcher.sh) start a script as
 
     /usr/bin/python3 [OPTIONS] -c 'import exp2_tab_script; exp2_tab_script.main()' SCRIPT ARGS
 
 and ``main`` does what the interpreter does for ``SCRIPT ARGS``: sys.argv,
 sys.orig_argv, sys.path[0] (the script's real directory, unless -P or -I),
 a fresh ``__main__`` with the same attributes, and tracebacks without this
-runner's frames. Only the compile step differs: a script Python 3 refuses for
-its indentation is compiled as Python 2 indented it (exp2_tab_import.py). A
-script Python 3 accepts is compiled from its bytes, exactly as it is.
+runner's frames. Only the compile step differs: a script Python 3 refuses, or
+that uses what only Python 2 had, is compiled as Python 2 read it
+(exp2_py2_read.py: the tab rule, the translation). A script Python 3 accepts
+is compiled from its bytes, exactly as it is. A file that is not Python source
+(a zip application, bytecode) goes to the interpreter as it was given.
 """
 import builtins
 import importlib.machinery
+import importlib.util
 import os
 import sys
 
+import exp2_py2_read
 import exp2_tab_import
 
 
@@ -55,19 +59,25 @@ def main():
     exp2_tab_import.install()  # also under -S, which skips sitecustomize
     with open(path, 'rb') as script:
         data = script.read()
-    reading = exp2_tab_import.read_with_tab_rule(data, filename)
+    if data.startswith(b'PK\x03\x04') or importlib.util.MAGIC_NUMBER == data[:4]:
+        argv = _drop_runner_arguments(list(getattr(sys, 'orig_argv', [sys.executable] + sys.argv)))
+        os.execv(sys.executable, [sys.executable] + argv[1:])
+    tabs, python2 = exp2_py2_read.switches()
+    reading = exp2_py2_read.read(data, filename, tabs=tabs, python2=python2)
     if reading is None:
         code = compile(data, filename, 'exec', dont_inherit=True)
+    elif reading.code is None:  # raises the error of the file, on its line
+        code = compile(reading.source, filename, 'exec', dont_inherit=True)
     else:
-        source, code = reading
-        if code is None:  # raises the error Python 2 gave, on the file's line
-            code = compile(source, filename, 'exec', dont_inherit=True)
-        import exp2_tab_report
-        exp2_tab_report.note(filename, script=True)
+        code = reading.code
+        if reading.how is not None:
+            import exp2_tab_report
+            exp2_tab_report.note(filename, script=True, how=reading.how)
     namespace = sys.modules['__main__'].__dict__
     namespace.clear()
     namespace.update(__name__='__main__', __doc__=None, __package__=None,
                      __loader__=importlib.machinery.SourceFileLoader('__main__', filename),
                      __spec__=None, __annotations__={}, __builtins__=builtins,
                      __file__=filename, __cached__=None)
+    exp2_tab_import.install_for_catkin_relay(sys.modules['__main__'], [path])
     exec(code, namespace)

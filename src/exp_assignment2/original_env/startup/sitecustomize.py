@@ -2,14 +2,15 @@
 
 Python imports ``sitecustomize`` at start-up from the first directory of
 sys.path that has one; this directory is on PYTHONPATH only inside that
-environment. It does six things:
+environment. It does seven things:
 
 1. runs the ``sitecustomize`` it shadows (Debian's, or one further down
    PYTHONPATH), so nothing the system configured is lost;
-2. unless EXP2_TAB_RULE is 0, installs the import hook that reads a module
-   Python 3 refuses for tabs in its indentation as Python 2 did
-   (exp2_tab_import.py; the script itself is python_launcher.sh's business, or
-   that of a catkin relay script's ``compile``);
+2. unless both EXP2_TAB_RULE and EXP2_PY2 are 0, installs the import hook that
+   reads a module as Python 2 did where Python 3 cannot: the tab rule for a
+   file Python 3 refuses for tabs in its indentation, 2to3's translation for
+   Python 2 code (exp2_tab_import.py, exp2_py2_read.py; the script itself is
+   python_launcher.sh's business, or that of a catkin relay script's ``compile``);
 3. when a display is configured (DISPLAY, WAYLAND_DISPLAY or an explicit
    QT_QPA_PLATFORM such as ``offscreen``) and EXP2_CV2_GUI_THREAD is not 0,
    arranges for cv2's HighGUI calls to run on one GUI thread once cv2 is
@@ -22,7 +23,10 @@ environment. It does six things:
    (``#!/usr/bin/python``) on this shell's python, one without its execute
    bit as if it had it (exp2_node_start.py).
 6. when EXP2_SEED is set (a run of the grader, with its seed), seeds Python's
-   ``random`` with it, so that a run can be repeated as it was.
+   ``random`` with it, so that a run can be repeated as it was;
+7. unless EXP2_KEYBOARD_WAIT is 0, when standard input is not a terminal,
+   has the keyboard read as on a terminal nobody types into (or where
+   EXP2_KEYBOARD's lines are typed): exp2_keyboard.py.
 
 Without a display nothing is changed: cv2.imshow then behaves as OpenCV's Qt
 backend does, which aborts the whole process ("could not connect to display",
@@ -52,7 +56,7 @@ def _display_configured():
 
 
 _run_shadowed_sitecustomize()
-if os.environ.get('EXP2_TAB_RULE', '1') != '0':
+if os.environ.get('EXP2_TAB_RULE', '1') != '0' or os.environ.get('EXP2_PY2', '1') != '0':
     import exp2_tab_import
     exp2_tab_import.install()
     exp2_tab_import.install_for_catkin_relay(sys.modules['__main__'], getattr(sys, 'argv', []))
@@ -68,3 +72,6 @@ if os.environ.get('EXP2_NODE_START', '1') != '0':
 if os.environ.get('EXP2_SEED', '').isdigit():
     import random
     random.seed(int(os.environ['EXP2_SEED']))
+if os.environ.get('EXP2_KEYBOARD_WAIT', '1') != '0':
+    import exp2_keyboard
+    exp2_keyboard.install()
