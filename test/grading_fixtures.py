@@ -32,6 +32,7 @@ EXPECTED = {'works': 'passed', 'tabs': 'passed', 'cpp_broken': 'not_built',
             'xterm_dog': 'passed'}
 EXPECTED.update(__import__('shape_fixtures').EXPECTED)     # each shape a submission comes in
 EXPECTED.update(__import__('release_fixtures').EXPECTED)   # the ROS release it was written for
+EXPECTED.update(__import__('py2_fixtures').EXPECTED)       # Python 2, and the keyboard
 EXPECTED.update(start_fixtures.EXPECTED)     # a README's cd and typo, a start script's timing
 
 RAISES = '''#!/usr/bin/env python3
@@ -315,11 +316,12 @@ def _tutorials(dest):
 
 def make_folder(dest, names=None):
     """Write the fixture submissions named (default: all) into ``dest``."""
+    import py2_fixtures
     import release_fixtures
     import shape_fixtures
     os.makedirs(dest, exist_ok=True)
     with open(os.path.join(dest, 'grading.yaml'), 'w') as f:
-        f.write(release_fixtures.FOLDER_SETTINGS)
+        f.write(release_fixtures.FOLDER_SETTINGS + py2_fixtures.FOLDER_SETTINGS)
     names = list(names or EXPECTED)
     scratch = os.path.join(dest, '.scratch')
     for name in names:
@@ -328,6 +330,9 @@ def make_folder(dest, names=None):
             continue
         if name in release_fixtures.EXPECTED:
             release_fixtures.make(name, dest)
+            continue
+        if name in py2_fixtures.EXPECTED:
+            py2_fixtures.make(name, dest)
             continue
         if name in ('zipped', 'tarred'):
             package = os.path.join(scratch, name, 'my_dog')      # one level down

@@ -186,6 +186,7 @@ def page(summary, run, pictures, profile, clean):
     parts.append('<h2>How it was started</h2>' + report_starts.table(run, clean))
     parts += report_packages.packages_section(run, clean)
     parts += report_releases.releases_section(run, summary.get('releases'), clean)
+    parts += report_failures.keyboard_section(run, clean)
     pics = [(k, pictures.get(k)) for k in ('top', 'head')] + \
         list((pictures.get('frames') or {}).items())     # the moments in their order
     for title, chosen, _ in ((pictures.get('windows') or {}).get('rows') or []):

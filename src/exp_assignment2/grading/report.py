@@ -206,6 +206,7 @@ def _page(summary, runs, runs_dir, pictures, profile):
     errors = main.get('errors') or []
     parts.extend(report_failures.launch_errors_section(main))
     parts.extend(report_failures.deaths_section(main))
+    parts.extend(report_failures.keyboard_section(main))
     if errors:
         parts.append('<h2>Errors (%d)</h2>' % main.get('error_count', len(errors)))
         for error in errors[:10]:

@@ -51,3 +51,17 @@ def deaths_section(run):
             parts.append('<p>the last lines of its log %s:</p><pre>%s</pre>' % (
                 _e(own['log']), _e(own['tail'])))
     return parts
+
+
+def keyboard_section(run, clean=str):
+    """The nodes that read the keyboard while nobody typed: they waited, as on a
+    terminal nobody types into (grading.yaml's ``input:`` gives them lines)."""
+    waits = run.get('keyboard') or []
+    if not waits:
+        return []
+    return ['<h2>Waited for the keyboard (%d)</h2><p>During a grading nobody types: these '
+            'reads waited, as on a terminal nobody types into, and the rest ran on '
+            '(<code>input:</code> in grading.yaml gives a command lines to type).</p><ul>%s</ul>'
+            % (len(waits), ''.join('<li>waited for keyboard input at <code>%s</code> (%s)</li>'
+                                   % (_e(clean(w['where'])), _e(clean(w['command'])))
+                                   for w in waits))]

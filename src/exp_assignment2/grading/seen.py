@@ -4,6 +4,7 @@ once from the run's record, its logs (through
 or made by hand in a test; :mod:`exp_assignment2.grading.verdicts` decides on them.
 """
 import os
+import re
 
 from exp_assignment2.grading import logs as logs_
 from exp_assignment2.grading import metrics
@@ -29,6 +30,7 @@ class Seen(object):
         self.started_nothing, self.launch_errors = list(started_nothing), list(launch_errors)
         self._checks = checks      # a list, or a function judging (roles, checks) when asked
         self._roles = None
+        self.keyboard = []         # [{'where': FILE:LINE, 'command'}]: reads nobody answered
 
     def _judge(self):
         if callable(self._checks):
@@ -97,6 +99,22 @@ def _command_of(rel, names):
     return names.get(index, 'command %d' % index)
 
 
+KEYBOARD_WAIT = re.compile(r'^\[original-env\] waited for keyboard input at (\S+)', re.M)
+
+
+def keyboard_waits(run_logs, names):
+    """[{'where', 'command'}] of the original-code environment's line for a
+    node that read the keyboard while nobody typed (it waited, as on a
+    terminal nobody types into), each place once."""
+    found, seen = [], set()
+    for rel, text in run_logs:
+        for match in KEYBOARD_WAIT.finditer(text):
+            if match.group(1) not in seen:
+                seen.add(match.group(1))
+                found.append({'where': match.group(1), 'command': _command_of(rel, names)})
+    return found
+
+
 def gather(work, record_dir, result, profile):
     """The :class:`Seen` of a finished run."""
     sizes = result.get('log_sizes') or {}
@@ -128,6 +146,7 @@ def gather(work, record_dir, result, profile):
     if not seen.ran:
         return seen
     seen.died = logs_.deaths(run_logs, work, sizes)
+    seen.keyboard = keyboard_waits(run_logs, names)
     seen.launch_errors = [{'command': _command_of(rel, names), 'line': line, 'log': rel}
                           for rel, line in logs_.cannot_launch(run_logs)]
     texts = dict(run_logs)

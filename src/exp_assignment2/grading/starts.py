@@ -47,6 +47,8 @@ def from_teacher(commands, delay, first=0):
             after = command.get('after', delay if index else 0)
             plan.append(_start(command['run'], command.get('cwd'), after,
                                ('start', index - 1) if index else ORIGIN))
+        if isinstance(command, dict) and command.get('input') is not None:
+            plan[-1]['input'] = command['input']     # what a person types into it
     return plan
 
 

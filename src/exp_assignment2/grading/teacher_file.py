@@ -20,7 +20,8 @@ ONE_KEYS = {'commands': list, 'skip': bool, 'roles': dict, 'release': str}
 ROLE_KEYS = ('robot', 'head', 'ball')     # a submission's roles named by the teacher (roles.py)
 RELEASE_NAMES = tuple(RELEASES)      # the releases the simulator can play
 # a command of grading.yaml written as a mapping: its line, when, from where
-START_KEYS = {'run': str, 'after': (int, float), 'at': (int, float), 'cwd': str}
+START_KEYS = {'run': str, 'after': (int, float), 'at': (int, float), 'cwd': str,
+              'input': (list, dict)}     # lines to type: the original-code environment's keyboard
 
 
 class TeacherFileError(Exception):
@@ -74,6 +75,26 @@ def _check_command(command, where):
     if os.path.isabs(cwd) or cwd.startswith('~') or '..' in cwd.split('/'):
         raise TeacherFileError('%s: commands: %s: cwd: %r must be a folder of the submission '
                                '(relative to its root)' % (where, command['run'], cwd))
+    if 'input' in command:
+        _check_input(command['input'], '%s: commands: %s: input' % (where, command['run']))
+
+
+def _check_input(given, where):
+    """``input:``, the lines a person types into the command's keyboard: a list of
+    {at: SIMULATED_S, text: LINE}, or such lists by node name, script name or '*'."""
+    lists = list(given.values()) if isinstance(given, dict) else [given]
+    for lines in lists:
+        if not isinstance(lines, list):
+            raise TeacherFileError('%s: a list of {at: S, text: LINE}, or such lists by node '
+                                   'or script name' % where)
+        for line in lines:
+            at = line.get('at') if isinstance(line, dict) else None
+            text = line.get('text') if isinstance(line, dict) else None
+            if not isinstance(line, dict) or set(line) - {'at', 'text'} or \
+                    isinstance(at, bool) or not isinstance(at, (int, float)) or \
+                    not 0 <= at <= 100000 or not isinstance(text, str) or '\n' in text:
+                raise TeacherFileError('%s: %r is not {at: SIMULATED_S, text: ONE_LINE}'
+                                       % (where, line))
 
 
 def read_teacher_file(path):

@@ -194,6 +194,8 @@ def judge(work, record_dir, result, profile):
            'error_count': len(seen.errors)}
     if seen.ran:
         out.update(died=seen.died, launch_errors=seen.launch_errors)
+        if seen.keyboard:     # it waited for a person: the page says where
+            out['keyboard'] = seen.keyboard
     if verdict in ('passed', 'failed_checks'):
         out['checks'] = seen.checks
     elif verdict in ('crashed', 'timed_out') and seen.checks is not None:
