@@ -213,3 +213,14 @@ def test_catkin_relay_scripts_compile_with_the_tab_rule(shell):
     assert 'File "%s", line 3' % (work / 'bad.py') in proc.stderr
     assert proc.stderr.rstrip().endswith(
         'IndentationError: unindent does not match any outer indentation level')
+
+
+def test_this_repositorys_own_scripts_start_as_they_are(shell):
+    """The launcher leaves this repository's scripts (the simulator, also as
+    exp_assignment2_sim) to /usr/bin/python3 as they are: the grader knows its
+    simulator by that command line. Seen with the fixture folder as EXP2_REPO:
+    its tabs are then Python 3's to refuse."""
+    env, work = shell
+    proc = run(['python3', 'tabs_node.py'], dict(env, EXP2_REPO=str(work)), work)
+    assert proc.returncode != 0 and 'TabError' in proc.stderr
+    assert run(['python3', 'tabs_node.py'], env, work).returncode == 0
