@@ -194,7 +194,7 @@ def dask_rows(args, folder, scratch, count):
                                           'rtf med', 'used'))
     try:
         for layout in ([args.dask], [args.dask // 2] * 2):
-            workers = [subprocess.Popen([sys.executable, '-m', 'exp_assignment2.grading.worker',
+            workers = [subprocess.Popen([sys.executable, '-m', 'exp_assignment2.grading.run.worker',
                                          address, '--runs', str(k), '--no-nanny'],
                                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                         start_new_session=True) for k in layout]

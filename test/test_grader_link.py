@@ -12,7 +12,7 @@ import time
 
 import pytest
 
-from exp_assignment2.grading.truth import TruthServer, read_record
+from exp_assignment2.grading.run.truth import TruthServer, read_record
 from test_launch_args import free_port, workspace_ready
 
 pytestmark = pytest.mark.skipif(not workspace_ready(), reason='no catkin workspace')

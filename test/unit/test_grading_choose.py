@@ -1,4 +1,4 @@
-"""A README read as a person reads it (exp_assignment2.grading.choose,
+"""A README read as a person reads it (exp_assignment2.grading.plan.choose,
 .planning.resolve), the settings' one precedence and the run's specification
 (.spec); launch files' nodes given by a fake reader, so no ROS and no master.
 One test reads real launch files in the sandbox (launch_nodes.read)."""
@@ -7,8 +7,8 @@ import shutil
 
 import pytest
 
-from exp_assignment2.grading import launch_nodes
-from exp_assignment2.grading.planning import resolve
+from exp_assignment2.grading.plan import launch_nodes
+from exp_assignment2.grading.plan.planning import resolve
 
 DOG = {'world_commands': [], 'default_commands': ['roslaunch {package} gazebo_world.launch']}
 MIRO = {'world_commands': ['roslaunch {sim} miro_world.launch'],
@@ -205,7 +205,8 @@ def test_the_plan_reads_an_archive_on_the_teachers_side(tmp_path, monkeypatch):
     submission's settings is carried in its spec, not patched onto a run."""
     import argparse
     import zipfile
-    from exp_assignment2.grading import build_deps, planning
+    from exp_assignment2.grading.plan import build_deps
+    from exp_assignment2.grading.plan import planning
     monkeypatch.setattr(build_deps, 'available_debian', lambda: set())
     monkeypatch.setattr(build_deps, 'install', lambda names, log: None)
     monkeypatch.setattr(launch_nodes, 'provided_packages', lambda: {'gazebo_ros'})

@@ -1,16 +1,16 @@
 """How the grader starts a submission, and what a profile may say
-(exp_assignment2.grading.commands, .profiles)."""
+(exp_assignment2.grading.plan.commands, .profiles)."""
 import json
 import os
 import re
 
 import pytest
 
-from exp_assignment2.grading import profiles
-from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file, \
+from exp_assignment2.grading.plan import profiles
+from exp_assignment2.grading.plan.commands import TeacherFileError, read_teacher_file, \
     readme_entries
-from exp_assignment2.grading.planning import resolve
-from exp_assignment2.grading.spec import RunSpec, settings
+from exp_assignment2.grading.plan.planning import resolve
+from exp_assignment2.grading.plan.spec import RunSpec, settings
 
 README = '''# My assignment
 
@@ -277,7 +277,7 @@ def test_the_readme_at_the_root_then_the_packages(tmp_path):
 def test_a_build_lines_packages_are_built_and_said_so(tmp_path):
     """resolve's build_packages reach packages.choose: a package only a build
     line names is built for that reason; one the main package uses says so."""
-    from exp_assignment2.grading import packages
+    from exp_assignment2.grading.plan import packages
     manifest = '<package format="2"><name>%s</name><version>0.0.1</version>%s</package>'
     for name, depends in (('dog', '<depend>dog_msgs</depend>'), ('dog_msgs', ''),
                           ('dog_tools', '')):

@@ -1,12 +1,16 @@
 """A fault of the grader's with one submission is that submission's
 ``grader_error``, with its cause; the others are graded and the report is
-written (exp_assignment2.grading.planning, runner, cli)."""
+written (exp_assignment2.grading.plan.planning, runner, cli)."""
 import argparse
 import os
 
-from exp_assignment2.grading import build_deps, cli, launch_nodes, planning, profiles
-from exp_assignment2.grading.runner import Run, RunSettings
-from exp_assignment2.grading.spec import RunSpec
+from exp_assignment2.grading.plan import build_deps
+from exp_assignment2.grading import cli
+from exp_assignment2.grading.plan import launch_nodes
+from exp_assignment2.grading.plan import planning
+from exp_assignment2.grading.plan import profiles
+from exp_assignment2.grading.run.runner import Run, RunSettings
+from exp_assignment2.grading.plan.spec import RunSpec
 
 PACKAGE_XML = '<package format="2"><name>%s</name><version>0.0.1</version></package>'
 

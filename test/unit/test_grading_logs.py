@@ -1,6 +1,6 @@
-"""What the grader reads in a run's logs (exp_assignment2.grading.logs), on hand-written
+"""What the grader reads in a run's logs (exp_assignment2.grading.judge.logs), on hand-written
 logs in roslaunch's, Python's, Qt's and C++'s words."""
-from exp_assignment2.grading import logs
+from exp_assignment2.grading.judge import logs
 
 ROSLAUNCH_MISSING = '''... logging to /w/ros_home/log/abc/roslaunch-host-77.log
 started roslaunch server http://localhost:40000/

@@ -1,5 +1,5 @@
 """Scores in the report, the student's page and Gradescope's results.json, from
-finished run records alone (exp_assignment2.grading.report_marks, .feedback,
+finished run records alone (exp_assignment2.grading.report.marks, .feedback,
 .gradescope; no ROS)."""
 import copy
 import csv
@@ -7,7 +7,9 @@ import json
 import os
 import sys
 
-from exp_assignment2.grading import gradescope, profiles, report
+from exp_assignment2.grading.report import gradescope
+from exp_assignment2.grading.plan import profiles
+from exp_assignment2.grading.report import index as report
 from test_grading_report import write_run
 
 DOG = profiles.load('dog')

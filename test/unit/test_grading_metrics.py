@@ -1,11 +1,14 @@
 """A run's figures and verdict from what the grader saw
-(exp_assignment2.grading.metrics, .verdicts), on hand-made records (each
+(exp_assignment2.grading.judge.metrics, .verdicts), on hand-made records (each
 verdict rule alone: test_grading_verdicts.py)."""
 import json
 import math
 import os
 
-from exp_assignment2.grading import metrics, profiles, roles, verdicts
+from exp_assignment2.grading.judge import metrics
+from exp_assignment2.grading.plan import profiles
+from exp_assignment2.grading.judge import roles
+from exp_assignment2.grading.judge import verdicts
 
 DOG = profiles.load('dog')
 MIRO = profiles.load('miro')

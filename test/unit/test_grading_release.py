@@ -1,7 +1,7 @@
-"""The ROS release a submission runs in (exp_assignment2.grading.ros_release)."""
+"""The ROS release a submission runs in (exp_assignment2.grading.plan.ros_release)."""
 import os
 
-from exp_assignment2.grading import ros_release
+from exp_assignment2.grading.plan import ros_release
 
 ALLOWED = ['kinetic', 'melodic', 'noetic']
 DIFF_DRIVE = '''<robot><gazebo>

@@ -1,9 +1,10 @@
-"""The grading's report from the runs' records alone (exp_assignment2.grading.report)."""
+"""The grading's report from the runs' records alone (exp_assignment2.grading.report.index)."""
 import csv
 import json
 import os
 
-from exp_assignment2.grading import profiles, report
+from exp_assignment2.grading.plan import profiles
+from exp_assignment2.grading.report import index as report
 
 DOG = profiles.load('dog')
 

@@ -3,7 +3,10 @@ the student named them (grading.roles), and judged as such (grading.metrics,
 scores): on hand-made records shaped like the simulator's (sim.model_facts)."""
 import math
 
-from exp_assignment2.grading import metrics, profiles, roles, scores
+from exp_assignment2.grading.judge import metrics
+from exp_assignment2.grading.plan import profiles
+from exp_assignment2.grading.judge import roles
+from exp_assignment2.grading.judge import scores
 
 DOG = profiles.load('dog')
 

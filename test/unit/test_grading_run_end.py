@@ -1,9 +1,9 @@
-"""Why a run ends now (exp_assignment2.grading.run_end): each reason alone on
+"""Why a run ends now (exp_assignment2.grading.run.ending): each reason alone on
 hand-made facts and a hand-turned clock, then their precedence, then
 roslaunch's rule that no death but a required node's ends a run."""
 import pytest
 
-from exp_assignment2.grading.run_end import (BUILD_LIMIT, SIMULATOR_WAIT, TRUTH_QUIET,
+from exp_assignment2.grading.run.ending import (BUILD_LIMIT, SIMULATOR_WAIT, TRUTH_QUIET,
                                              RunFacts, end_reason)
 
 T0 = 1000.0         # the clock when the run started

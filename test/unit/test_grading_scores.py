@@ -1,10 +1,11 @@
-"""A run's score from its checks and verdict (exp_assignment2.grading.scores), and the
+"""A run's score from its checks and verdict (exp_assignment2.grading.judge.scores), and the
 rubric's keys in a profile (no ROS)."""
 import copy
 
 import pytest
 
-from exp_assignment2.grading import profiles, scores
+from exp_assignment2.grading.plan import profiles
+from exp_assignment2.grading.judge import scores
 
 DOG = profiles.load('dog')
 MIRO = profiles.load('miro')

@@ -16,7 +16,10 @@ sys.path.insert(0, os.path.join(HERE, '..'))
 sys.path.insert(0, os.path.join(HERE, '..', '..', 'src'))
 pytest.importorskip('copydetect')
 import similarity_fixtures  # noqa: E402
-from exp_assignment2.grading import cli, report, similarity, similarity_report  # noqa: E402
+from exp_assignment2.grading import cli
+from exp_assignment2.grading.report import index as report
+from exp_assignment2.grading.similarity import fingerprints as similarity
+from exp_assignment2.grading.similarity import page as similarity_report  # noqa: E402
 
 
 @pytest.fixture(scope='module')
@@ -128,8 +131,8 @@ def test_report_opens_in_chromium_with_its_image(made, tmp_path):
 
 
 def test_grading_yaml_template_relative_to_the_folder(made, tmp_path):
-    from exp_assignment2.grading import similarity_run
-    from exp_assignment2.grading.commands import TeacherFileError, read_teacher_file
+    from exp_assignment2.grading.similarity import step as similarity_run
+    from exp_assignment2.grading.plan.commands import TeacherFileError, read_teacher_file
     root, template, folder = made
     teacher_file = tmp_path / 'grading.yaml'
     teacher_file.write_text('template: [%s]\n' % os.path.relpath(template, folder))

@@ -1,4 +1,4 @@
-"""When each command starts (exp_assignment2.grading.start_script, .starts):
+"""When each command starts (exp_assignment2.grading.plan.start_script, .starts):
 a start script as its shell runs it, a README's commands typed a few seconds
 apart, grading.yaml's own timing, and the driver's loop on a hand-turned
 clock (no process, no ROS)."""
@@ -7,10 +7,11 @@ import os
 
 import pytest
 
-from exp_assignment2.grading import start_script, starts
-from exp_assignment2.grading.planning import resolve
-from exp_assignment2.grading.start_script import TERMINAL_OPEN
-from exp_assignment2.grading.teacher_file import TeacherFileError, read_teacher_file
+from exp_assignment2.grading.plan import start_script
+from exp_assignment2.grading.plan import starts
+from exp_assignment2.grading.plan.planning import resolve
+from exp_assignment2.grading.plan.start_script import TERMINAL_OPEN
+from exp_assignment2.grading.plan.teacher_file import TeacherFileError, read_teacher_file
 
 # a real MiRo solution's shape: three terminals, then the launch file in the script itself
 MIRO_SH = '''#!/bin/bash
@@ -61,7 +62,7 @@ def test_a_script_is_timed_as_its_shell_runs_it(text, expected):
 
 
 def test_cd_in_a_script_and_inside_a_terminal(tmp_path):
-    from exp_assignment2.grading import own_names
+    from exp_assignment2.grading.plan import own_names
     (tmp_path / 'launch').mkdir()
     got = start_script.read('cd $(rospack find p)/launch\nrosrun p a.py\n', '', lambda tool,
                             here, target: own_names.cd(str(tmp_path), here, target,
@@ -198,8 +199,8 @@ def test_the_plan_in_words():
 
 
 def test_the_runs_plan_gives_each_start_a_folder_inside_the_submission(tmp_path):
-    from exp_assignment2.grading.runner import Run, RunSettings
-    from exp_assignment2.grading.spec import RunSpec
+    from exp_assignment2.grading.run.runner import Run, RunSettings
+    from exp_assignment2.grading.plan.spec import RunSpec
     plan = [dict(s, cwd=cwd) for s, cwd in zip(
         starts.typed(['roslaunch a.launch', 'rosrun p b.py', 'rosrun p c.py'], 5), (
             'my_pkg/launch', '../../outside', ''))]
@@ -267,7 +268,7 @@ def test_the_driver_starts_each_command_in_its_folder_when_due(tmp_path, capsys)
 
 
 def test_the_page_says_when_each_command_started_and_from_where():
-    from exp_assignment2.grading import report_starts
+    from exp_assignment2.grading.report import starts as report_starts
     run = {'commands': ['roslaunch p w.launch', 'roslaunch --wait p all.launch', 'rosrun p a.py',
                         'rosrun p after.py'],
            'events': [{'event': 'master', 'up': True},
@@ -291,8 +292,8 @@ def test_the_page_says_when_each_command_started_and_from_where():
 
 
 def test_lines_to_type_go_with_their_command():
-    from exp_assignment2.grading import starts
-    from exp_assignment2.grading.teacher_file import TeacherFileError, _check_command
+    from exp_assignment2.grading.plan import starts
+    from exp_assignment2.grading.plan.teacher_file import TeacherFileError, _check_command
     given = {'run': 'rosrun p ask.py', 'input': [{'at': 3, 'text': 'm'}]}
     _check_command(given, 'grading.yaml')
     _check_command({'run': 'roslaunch p a.launch', 'input': {'ask.py': [{'at': 0, 'text': ''}]}},
@@ -306,7 +307,7 @@ def test_lines_to_type_go_with_their_command():
 
 
 def test_a_read_nobody_answered_is_said_once_with_its_command():
-    from exp_assignment2.grading.seen import keyboard_waits
+    from exp_assignment2.grading.judge.seen import keyboard_waits
     logs = [('logs/command-1.log', 'Command: [original-env] waited for keyboard input at '
              'scripts/ask.py:37\n[original-env] waited for keyboard input at scripts/ask.py:37'),
             ('ros_home/log/x/ask-2.log', 'nothing')]

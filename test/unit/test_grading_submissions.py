@@ -1,4 +1,4 @@
-"""The grader reads a teacher's folder safely (exp_assignment2.grading.submissions)."""
+"""The grader reads a teacher's folder safely (exp_assignment2.grading.plan.submissions)."""
 import io
 import os
 import tarfile
@@ -6,8 +6,8 @@ import zipfile
 
 import pytest
 
-from exp_assignment2.grading import packages
-from exp_assignment2.grading.submissions import SubmissionError, discover, unpack
+from exp_assignment2.grading.plan import packages
+from exp_assignment2.grading.plan.submissions import SubmissionError, discover, unpack
 
 PACKAGE_XML = '<package format="2"><name>%s</name><version>0.0.1</version></package>'
 
@@ -193,7 +193,7 @@ def test_packages_at_any_depth(tmp_path):
 
 def test_only_the_repositorys_simulator_may_send_the_ground_truth(tmp_path):
     from exp_assignment2.grading.paths import SIMULATOR
-    from exp_assignment2.grading.peer import runs_our_simulator
+    from exp_assignment2.grading.run.peer import runs_our_simulator
     assert os.path.exists(SIMULATOR)
     link = tmp_path / 'scripts'
     os.symlink(os.path.dirname(SIMULATOR), str(link))     # the overlay's link farm
@@ -232,7 +232,7 @@ def test_the_simulator_through_catkins_devel_and_install_spaces(tmp_path):
     first line. Both are the simulator; a relay to another script, an edited
     copy, or any of them in a place the run can write, are not."""
     from exp_assignment2.grading.paths import SIMULATOR
-    from exp_assignment2.grading.peer import runs_our_simulator, runs_simulator_file
+    from exp_assignment2.grading.run.peer import runs_our_simulator, runs_simulator_file
     relay = _relay(tmp_path / 'ws' / 'devel' / 'lib' / 'exp_assignment2' / 'simulator.py',
                    SIMULATOR)
     assert runs_simulator_file(relay) == 'relay'
@@ -260,7 +260,7 @@ def test_the_simulator_through_catkins_devel_and_install_spaces(tmp_path):
     installed.write_text('#!/usr/bin/python3\n' + source.split('\n', 1)[1] + 'x = 1\n')
     assert not runs_our_simulator(['/usr/bin/python3', str(installed)])
     # the same relay in the run's writable directory: it could be changed after the start
-    from exp_assignment2.grading.sandbox import mount_table, writable_at
+    from exp_assignment2.grading.run.sandbox import mount_table, writable_at
     mounts = mount_table(str(tmp_path / 'ws'), hidden=[str(tmp_path)],
                          readonly=[str(tmp_path / 'ws2')])
 

@@ -1,12 +1,12 @@
-"""A run travels between machines as archives (exp_assignment2.grading.tasks)."""
+"""A run travels between machines as archives (exp_assignment2.grading.run.tasks)."""
 import io
 import os
 import tarfile
 
 import pytest
 
-from exp_assignment2.grading import tasks
-from exp_assignment2.grading.submissions import Submission, SubmissionError
+from exp_assignment2.grading.run import tasks
+from exp_assignment2.grading.plan.submissions import Submission, SubmissionError
 
 
 def test_a_run_directory_comes_back_bounded(tmp_path):

@@ -1,11 +1,11 @@
-"""The verdict's rules (exp_assignment2.grading.verdicts.RULES), each alone on
+"""The verdict's rules (exp_assignment2.grading.judge.verdicts.RULES), each alone on
 hand-made facts (a Seen), then their order: the precedence docs/grading.md states;
 then roslaunch's rules: a node that dies ends nothing unless it is required, and
 a system that ended is crashed only when its checks were not met by then."""
 import pytest
 
-from exp_assignment2.grading import verdicts
-from exp_assignment2.grading.verdicts import RULES, Seen, decide
+from exp_assignment2.grading.judge import verdicts
+from exp_assignment2.grading.judge.verdicts import RULES, Seen, decide
 
 PASSED = [{'name': 'reaches the ball', 'passed': True}]
 FAILED = [{'name': 'reaches the ball', 'passed': False}, {'name': 'head', 'passed': True}]

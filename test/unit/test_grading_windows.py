@@ -1,11 +1,13 @@
-"""The bookkeeping of a run's window pictures (exp_assignment2.grading.windows)
+"""The bookkeeping of a run's window pictures (exp_assignment2.grading.run.windows)
 and their place on the page, with no display and no simulator."""
 import json
 import os
 
 import pytest
 
-from exp_assignment2.grading import profiles, report, windows
+from exp_assignment2.grading.plan import profiles
+from exp_assignment2.grading.report import index as report
+from exp_assignment2.grading.run import windows
 
 DOG = profiles.load('dog')
 
@@ -146,10 +148,10 @@ def test_the_page_shows_each_window_by_its_title_beside_the_camera(tmp_path):
 
 
 def test_the_display_and_the_viewers_it_makes_draw_have_their_own_share_of_cpu():
-    from exp_assignment2.grading import cpu
+    from exp_assignment2.grading.run import cpu
     kinds = {command: cpu.kind(command) for command in (
         'Xvfb -displayfd 4 -screen 0 1920x1080x24',
-        '/usr/bin/python3 /r/src/exp_assignment2/grading/display.py capture :0 /w/display',
+        '/usr/bin/python3 /r/src/exp_assignment2/grading/run/display.py capture :0 /w/display',
         '/usr/bin/python3 /ws/src/gazebo_ros/scripts/gzclient __name:=gazebo_gui',
         'rviz -d /r/gazebo_ros/rviz/gzclient.rviz __name:=gazebo_gui_rviz',
         '/usr/bin/python3 /w/overlay/devel/lib/my_dog/dog.py',
@@ -160,7 +162,7 @@ def test_the_display_and_the_viewers_it_makes_draw_have_their_own_share_of_cpu()
 
 def test_no_xvfb_is_a_display_error(tmp_path, monkeypatch):
     """(The verdict it leads to, grader_error, is test_grading_verdicts.py's 'no display'.)"""
-    from exp_assignment2.grading import display
+    from exp_assignment2.grading.run import display
     monkeypatch.setenv('PATH', str(tmp_path))          # no Xvfb here
     with pytest.raises(display.DisplayError, match='Xvfb could not start'):
         display.start(str(tmp_path / 'display'))

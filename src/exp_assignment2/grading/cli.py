@@ -12,15 +12,18 @@ import os
 import signal
 import sys
 
-from exp_assignment2.grading import planning, profiles, report, tasks
-from exp_assignment2.grading.cluster import Cluster, ClusterError, lost_result, payload, \
+from exp_assignment2.grading.plan import planning
+from exp_assignment2.grading.plan import profiles
+from exp_assignment2.grading.report import index as report
+from exp_assignment2.grading.run import tasks
+from exp_assignment2.grading.run.cluster import Cluster, ClusterError, lost_result, payload, \
     refused_result, rejected_result, unpack_result
-from exp_assignment2.grading.commands import TeacherFileError
+from exp_assignment2.grading.plan.commands import TeacherFileError
 from exp_assignment2.grading.progress import Progress
-from exp_assignment2.grading.runner import Run, RunSettings
-from exp_assignment2.grading.spec import RunSpec
-from exp_assignment2.grading.planning import traceback_line
-from exp_assignment2.grading.submissions import SubmissionError
+from exp_assignment2.grading.run.runner import Run, RunSettings
+from exp_assignment2.grading.plan.spec import RunSpec
+from exp_assignment2.grading.plan.planning import traceback_line
+from exp_assignment2.grading.plan.submissions import SubmissionError
 
 # 4: the report is written, but some runs could not be graded (grader_error: run them again)
 EXIT_OK, EXIT_USAGE, EXIT_CLUSTER, EXIT_NOT_ALL_GRADED = 0, 2, 3, 4
@@ -255,7 +258,7 @@ def add_similarity_args(parser):
 
 def similarity_step(args, out, log):
     """The similarity report into ``out``; never changes a verdict or a score."""
-    from exp_assignment2.grading import similarity_run
+    from exp_assignment2.grading.similarity import step as similarity_run
     folder = os.path.abspath(args.submissions)
     try:
         if out == folder or out.startswith(folder + os.sep):
@@ -288,7 +291,7 @@ def feedback_line(summaries, out):
 def summary_line(summaries, out):
     import collections
     counts = collections.Counter(s['verdict'] for s in summaries.values())
-    from exp_assignment2.grading.verdicts import VERDICTS
+    from exp_assignment2.grading.judge.verdicts import VERDICTS
     return 'graded %d submissions: %s; report: %s' % (
         len(summaries), ', '.join('%d %s' % (counts[v], v) for v in VERDICTS if counts[v]),
         os.path.join(out, 'index.html'))

@@ -1,7 +1,7 @@
 """Where things are in this repository: found here once, imported by the rest.
 
-No import of the package: ``inside.py`` runs in the sandbox as a script and
-imports this file as ``paths`` (its own directory is first on ``sys.path``).
+No import of the package: ``run/inside.py`` runs in the sandbox as a script
+and finds this file beside its own folder (the standard library only).
 """
 import os
 
@@ -9,7 +9,7 @@ import os
 GRADING = os.path.dirname(os.path.realpath(__file__))
 SRC = os.path.dirname(os.path.dirname(GRADING))
 REPO = os.path.dirname(SRC)
-INSIDE = os.path.join(GRADING, 'inside.py')
+INSIDE = os.path.join(GRADING, 'run', 'inside.py')
 SIMULATOR = os.path.join(REPO, 'scripts', 'simulator.py')
 PROFILE_DIR = os.path.join(REPO, 'config', 'grading')
 PACKAGE_XML = os.path.join(REPO, 'package.xml')

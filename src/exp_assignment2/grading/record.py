@@ -16,7 +16,7 @@ keys, those of a run that did not run left out:
 * how it went: ``started``, ``finished``, ``events`` (the driver's), ``build``
   (the build's outcome as the driver sent it: ``rc`` and ``error`` with
   ``file``, ``line``, ``message``), ``ended_by`` (why the run was ended:
-  :mod:`exp_assignment2.grading.run_end`'s ``duration``,
+  :mod:`exp_assignment2.grading.run.ending`'s ``duration``,
   ``required_node_died``, ``all_exited``, ``wall_limit``, ``build_limit``,
   ``no_simulator``, ``disk_limit``, ``cancelled``; ``build_failed``,
   ``driver_exit`` when its driver ended first, ``not_run`` when it never
@@ -25,12 +25,12 @@ keys, those of a run that did not run left out:
   the required node whose death ended it), ``log_sizes``, ``truth``,
   ``real_time_factor``, ``wall_time``, ``cpu_s``, ``memory_mb``,
   ``peak_memory_mb``, ``oom``, ``all_gone``, ``sandbox_exit``, ``cut``;
-* the verdict (:mod:`exp_assignment2.grading.verdicts`): ``verdict``,
+* the verdict (:mod:`exp_assignment2.grading.judge.verdicts`): ``verdict``,
   ``reason``, ``checks`` (of a crashed or timed-out run too, with ``checks_until``
   naming its verdict: judged on the truth until its end; a check not run has ``judged``
   False and ``passed`` None), ``errors``, ``error_count``, ``died``, ``launch_errors``,
   ``roles`` (the robot, head, camera and ball judged, each with why:
-  :mod:`exp_assignment2.grading.roles`).
+  :mod:`exp_assignment2.grading.judge.roles`).
 """
 import json
 import os

@@ -9,7 +9,7 @@ their names. The simulator knows each of those facts from the model's URDF
 and its ``<gazebo>`` plugins; :func:`describe` writes them down as plain
 data, sent once per spawned model in the ground truth
 (:mod:`.ground_truth`). Deciding the roles from them is the grader's
-business (:mod:`exp_assignment2.grading.roles`).
+business (:mod:`exp_assignment2.grading.judge.roles`).
 """
 
 MOVING_JOINTS = ('revolute', 'continuous', 'prismatic')

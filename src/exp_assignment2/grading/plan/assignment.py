@@ -1,0 +1,106 @@
+"""Which of a repository's packages, and of its README's parts, are this
+assignment's (no ROS).
+
+A student may hand in the repository of the whole course: assignment 1,
+this one and assignment 3, each with its packages, and one README with a
+section for each. A person grading this assignment runs this one's: the
+package named as the course's template names it (the profile's
+``assignment``: ``exp_assignment2``, or a folder called ``assignment2``), or
+the one with the launch file the profile starts, and, of a README in
+sections, the sections that start it or what it uses; a section that
+starts only the submission's other packages (another assignment's) is left
+out, with its heading named.
+"""
+import os
+import re
+import shlex
+
+from exp_assignment2.grading.plan import packages as packages_
+
+HEADING = re.compile(r'^(#{1,6})\s+(.*?)\s*#*\s*$|^(.+)\n(?:=+|-+)\s*$', re.M)
+
+
+def _named(package, names):
+    """Is the package, or a folder on its path, called as the assignment is?"""
+    wanted = {n.lower() for n in names}
+    parts = [package.name] + package.rel.replace(os.sep, '/').split('/')
+    return any(p.lower() in wanted for p in parts)
+
+
+def main_package(found, profile, readme_named=()):
+    """The package the run is about (see the module's docstring); the
+    README's first named package after the profile's names and launch file."""
+    names = profile.get('assignment') or []
+    named = [p for p in found if not p.error and _named(p, names)]
+    if named:       # the package itself so named first, then one in a folder so named
+        return sorted(named, key=lambda p: (p.name.lower() not in {n.lower() for n in names},
+                                            p.rel.count(os.sep)))[0]
+    launches = [w for c in profile['default_commands'] for w in c.split()
+                if w.endswith('.launch')]
+    return packages_.main_package(found, launches, readme_named)
+
+
+def connected(found, main):
+    """The names of the packages main uses (transitively) and of those using it."""
+    names = {p.name for p in found}
+    by_name = {p.name: p for p in found}
+    uses = {p.name: packages_.references(p, names) for p in found}
+    linked, queue = {main.name}, [main.name]
+    while queue:
+        name = queue.pop()
+        for other in sorted(uses.get(name, ())):
+            if other not in linked:
+                linked.add(other)
+                queue.append(other)
+    linked |= {n for n, used in uses.items() if main.name in used and n in by_name}
+    return linked
+
+
+def section_of(text, command):
+    """The heading of the README section where ``command`` first appears
+    (None before any heading, or not found)."""
+    at = text.find(command)
+    if at < 0:
+        return None
+    heading = None
+    for match in HEADING.finditer(text):
+        if match.start() > at:
+            break
+        heading = (match.group(2) or match.group(3) or '').strip()
+    return heading
+
+
+def other_sections(readme_text, entries, found, main):
+    """{command: why} for the README's commands in sections about another
+    assignment: sections whose commands start only the submission's
+    packages that main neither uses nor is used by. Nothing when the README
+    has one section of commands, or the submission one package."""
+    if len(found) < 2 or not readme_text:
+        return {}
+    own = {p.name for p in found}
+    linked = connected(found, main)
+    sections = {}
+    for entry in entries:
+        if entry.get('kind') not in ('ros', 'script'):
+            continue
+        sections.setdefault(section_of(readme_text, entry['command']), []).append(entry)
+    if len(sections) < 2:
+        return {}
+    out = {}
+    for heading, listed in sections.items():
+        started = {_package_word(e['command']) for e in listed} - {None}
+        if heading is None or not started or not started <= own or started & linked:
+            continue
+        for entry in listed:
+            out[entry['command']] = ('left out: another part of the README (`%s`) starts %s, '
+                                     'not this assignment\'s %s' % (
+                                         heading, ', '.join(sorted(started)), main.name))
+    return out
+
+
+def _package_word(command):
+    try:
+        words = [w for w in shlex.split(command) if not w.startswith('-') and ':=' not in w]
+    except ValueError:
+        return None
+    return words[1] if len(words) > 2 and words[0] in ('roslaunch', 'rosrun') else None

@@ -1,0 +1,201 @@
+"""The grader's runs as Dask tasks, on one machine or many (no ROS).
+
+One code path: by default an in-process local cluster with ``--jobs`` slots;
+with ``--scheduler tcp://HOST:PORT``, that scheduler's workers (``bash
+tools/run grade-worker``). Each task asks for one ``runs`` resource, so a
+worker started with ``--resources runs=K`` takes at most K runs at once.
+
+* A worker whose package version is not the teacher's is left out (one line
+  naming both versions), and refuses a run that reaches it anyway.
+* A worker lost in the middle of a run: Dask runs the task again on another
+  worker; each start is announced on a Dask queue, so the report says which
+  runs were run again and where. When the scheduler's ``allowed-failures``
+  (Dask's default: 3) is passed, at the fourth loss, the run
+  ends as ``grader_error`` (KilledWorker), never as the student's fault.
+* Ctrl-C (or SIGTERM) sets a Dask event that every running task polls: its
+  run is ended at once (its sandbox killed), and the futures are cancelled.
+"""
+import socket
+import time
+import uuid
+import warnings
+
+from exp_assignment2.grading import record
+from exp_assignment2.grading.run import tasks
+
+CONNECT_TIMEOUT = 5.0          # s to reach a scheduler, then one line
+
+
+class ClusterError(Exception):
+    """One line: the scheduler cannot be reached, or no worker can take runs."""
+
+
+def _check_reachable(address, timeout=CONNECT_TIMEOUT):
+    """A plain TCP connection first: Dask's own can take much longer to give up."""
+    hostport = address.split('://', 1)[-1]
+    host, _, port = hostport.rpartition(':')
+    try:
+        with socket.create_connection((host or 'localhost', int(port)), timeout=timeout):
+            return
+    except (OSError, ValueError) as exc:
+        raise ClusterError('cannot reach the Dask scheduler at %s: %s' % (
+            address, getattr(exc, 'strerror', None) or exc))
+
+
+def _remote_version():
+    return tasks.package_version()
+
+
+def _task(payload, data, stop_name, starts_name):
+    """What a worker runs: announce the start, run, watch for the teacher's stop."""
+    from distributed import Event, Queue, get_worker
+    payload = dict(payload, data=data)
+    worker = get_worker()
+    Queue(starts_name).put({'label': payload['label'], 'worker': worker.address,
+                            'time': time.time()})
+    stop = Event(stop_name)
+    return tasks.run_task(payload, stop=lambda: stop.wait(1.0))
+
+
+class Cluster(object):
+    """A Dask client for grading: ``submit`` runs, ``poll`` for progress, ``close``."""
+
+    def __init__(self, scheduler=None, jobs=1, log=print):
+        import dask
+        from distributed import Client, LocalCluster
+        self.log = log
+        # allowed-failures is the scheduler's own setting: Dask's default (3) here too
+        dask.config.set({'distributed.comm.timeouts.connect': '%ds' % CONNECT_TIMEOUT})
+        self.local = None
+        if scheduler:
+            _check_reachable(scheduler)
+            try:
+                self.client = Client(scheduler, timeout=CONNECT_TIMEOUT)
+            except (OSError, TimeoutError) as exc:
+                raise ClusterError('cannot reach the Dask scheduler at %s: %s'
+                                   % (scheduler, exc))
+            dashboard = self.client.dashboard_link
+            if dashboard:
+                log('Dask dashboard: %s' % dashboard)
+        else:
+            self.local = LocalCluster(n_workers=1, threads_per_worker=jobs, processes=False,
+                                      resources={'runs': jobs}, dashboard_address=None)
+            self.client = Client(self.local)
+        self.token = uuid.uuid4().hex[:12]
+        from distributed import Event, Queue
+        self.stop_event = Event('exp2-grade-stop-' + self.token, client=self.client)
+        self.starts = Queue('exp2-grade-starts-' + self.token, client=self.client)
+        self.started = {}           # label -> [worker address, ...] (more than one: run again)
+        self.version = tasks.package_version()
+        self.workers = self._eligible_workers()
+
+    def _eligible_workers(self):
+        """Addresses of the workers with the teacher's version (None: all, on one machine)."""
+        if self.local is not None:
+            return None
+        versions = self.client.run(_remote_version)
+        good = [w for w, v in versions.items() if v == self.version]
+        for worker, version in sorted(versions.items()):
+            if version != self.version:
+                self.log('worker %s has exp_assignment2 %s, the teacher %s: refused'
+                         % (worker, version, self.version))
+        if not good:
+            raise ClusterError('no worker with exp_assignment2 %s (workers: %s)' % (
+                self.version, ', '.join('%s %s' % kv for kv in sorted(versions.items()))
+                or 'none'))
+        return good
+
+    def worker_count(self):
+        try:
+            return len(self.client.scheduler_info()['workers'])
+        except Exception:     # the scheduler went away: the progress line says 0
+            return 0
+
+    def submit(self, payload):
+        # the submission's bytes stay in the task itself, held by the scheduler: a
+        # copy scattered to one worker is lost with that worker, and the run with it
+        payload = dict(payload)
+        data = payload.pop('data')
+        with warnings.catch_warnings():       # "Large object ... in task graph": on purpose
+            warnings.simplefilter('ignore', UserWarning)
+            return self._submit(payload, data)
+
+    def _submit(self, payload, data):
+        return self.client.submit(_task, payload, data, 'exp2-grade-stop-' + self.token,
+                                  'exp2-grade-starts-' + self.token, resources={'runs': 1},
+                                  pure=False, workers=self.workers,
+                                  allow_other_workers=False, key='grade-%s-%s' % (
+                                      payload['label'], self.token))
+
+    def poll_starts(self):
+        """Read the start announcements (what runs where, and which started again)."""
+        for start in self.starts.get(batch=True):      # what is there now, without waiting
+            self.started.setdefault(start['label'], []).append(start['worker'])
+
+    def cancel(self, futures):
+        self.stop_event.set()
+        self.client.cancel(list(futures))
+
+    def close(self):
+        try:
+            self.client.close()
+        finally:
+            if self.local is not None:
+                self.local.close()
+
+
+def payload(run, version):
+    """What a task needs to run one Run anywhere (see tasks.run_task): its
+    specification as a plain dict, and the submission's bytes."""
+    kind, data = tasks.pack_submission(run.submission)
+    return {'spec': run.spec.to_dict(), 'packed_kind': kind, 'data': data,
+            'label': run.label, 'version': version}
+
+
+def unpack_result(outcome, run, started):
+    """The run's directory and result on the teacher's side; its retries noted."""
+    result = outcome['result']
+    tasks.unpack_run(outcome['archive'], run.dir)
+    workers = started.get(run.label) or []
+    result['workers'] = workers
+    if len(workers) > 1:
+        result.setdefault('notes', []).append(
+            'run again: its worker %s was lost in the middle of the run; done on %s'
+            % (', '.join(workers[:-1]), workers[-1]))
+    return _rewrite(run, result)
+
+
+def lost_result(run, error, started):
+    """A run Dask gave up on (its workers kept dying): the grader's fault."""
+    return refused_result(run, 'the grader lost this run: %s' % (
+        str(error).splitlines()[0][:300] if str(error) else type(error).__name__),
+        started.get(run.label) or [])
+
+
+def refused_result(run, reason, workers=()):
+    """A run that did not run, for a reason of the grader's or the teacher's."""
+    result = record.RunRecord.new(
+        run.spec.name, run.label, run.seed, verdict='grader_error',
+        commands=run.spec.commands, commands_from=run.spec.commands_from,
+        readme_commands=run.spec.readme_commands, reason=reason, workers=list(workers),
+        truth={'sim_time': 0.0}, notes=list(run.spec.notes), duration=run.spec.duration,
+        ended_by='not_run')
+    return _rewrite(run, result)
+
+
+def rejected_result(run, reason):
+    """A submission that cannot be taken at all (it does not unpack, it holds
+    no package, it is not a folder or an archive): ``not_built``, decided on
+    the teacher's side without a worker."""
+    result = record.RunRecord.new(
+        run.spec.name, run.label, run.seed, verdict='not_built', reason=reason,
+        commands=[], commands_from='', readme_commands=[], truth={'sim_time': 0.0},
+        notes=list(run.spec.notes), duration=run.spec.duration, ended_by='not_run',
+        packages=list(run.spec.packages))
+    return _rewrite(run, result)
+
+
+def _rewrite(run, result):
+    """The record written (through its one writer) and kept as the run's result."""
+    run.result, run.state = record.write(run.record, result), 'done'
+    return run.result

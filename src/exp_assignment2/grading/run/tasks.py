@@ -1,0 +1,172 @@
+"""A grading run as a task that can go to any machine (no ROS here, no Dask
+either: :mod:`exp_assignment2.grading.run.cluster` hands these to Dask).
+
+The submission travels as an archive (``pack_submission``); the worker runs
+it in a scratch directory of its own (``run_task``) and sends back the run's
+directory as an archive (``pack_run``): its record, its logs, its build
+log and its windows' pictures, bounded in size (what was cut is said in the result). The teacher's
+side unpacks it where the report expects it (``unpack_run``). No filesystem
+is shared.
+"""
+import io
+import os
+import shutil
+import tarfile
+import tempfile
+import threading
+import time
+
+from exp_assignment2.grading.paths import PACKAGE_XML
+from exp_assignment2.grading.run.runner import Run, RunSettings
+from exp_assignment2.grading.plan.spec import RunSpec
+from exp_assignment2.grading.plan.submissions import MAX_UNPACKED, Submission, copy_dir
+
+RETURN_LIMIT = 64 * 1024 * 1024        # bytes of a run's directory sent back
+FILE_LIMIT = 8 * 1024 * 1024           # bytes of one log sent back (its start and end)
+KEPT = ('record', 'work/logs', 'work/ros_home/log', 'work/overlay', 'work/display')
+VERSION_ENV = 'EXP2_GRADER_VERSION'    # the version a worker announces (default: package.xml's)
+
+
+class VersionMismatch(Exception):
+    """A worker whose package is not the teacher's refuses the run."""
+
+
+def package_version():
+    import re
+    path = PACKAGE_XML
+    if os.environ.get(VERSION_ENV):
+        return os.environ[VERSION_ENV]
+    try:
+        with open(path) as f:
+            return re.search(r'<version>([^<]+)</version>', f.read()).group(1)
+    except (OSError, AttributeError):
+        return 'unknown'
+
+
+def pack_submission(submission):
+    """(kind, bytes): an archive as it is; a directory as a .tar.gz of its
+    files, links inside it followed (SubmissionError for a link out of it:
+    no file of the teacher's machine travels with a submission)."""
+    if submission.kind != 'dir':
+        with open(submission.path, 'rb') as f:
+            return submission.kind, f.read()
+    scratch = tempfile.mkdtemp(prefix='exp2-pack-')
+    try:
+        copy = os.path.join(scratch, os.path.basename(submission.path.rstrip('/')) or 'package')
+        copy_dir(submission.path, copy, MAX_UNPACKED)
+        buffer = io.BytesIO()
+        with tarfile.open(fileobj=buffer, mode='w:gz') as archive:
+            archive.add(copy, arcname=os.path.basename(copy))
+        return 'tar', buffer.getvalue()
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+
+
+def pack_run(run_dir, limit=RETURN_LIMIT):
+    """(bytes, [what was cut]) of a run's directory: record and logs."""
+    buffer, cut, total = io.BytesIO(), [], 0
+    with tarfile.open(fileobj=buffer, mode='w:gz') as archive:
+        for part in KEPT:
+            base = os.path.join(run_dir, part)
+            for root, dirs, files in os.walk(base):
+                dirs[:] = [d for d in dirs if not (part == 'work/overlay' and d in
+                                                  ('devel', 'src', 'stand_ins'))]
+                for name in sorted(files):
+                    if part == 'work/overlay' and name != 'build.log':
+                        continue
+                    path = os.path.join(root, name)
+                    if os.path.islink(path) or not os.path.isfile(path):
+                        continue
+                    rel = os.path.relpath(path, run_dir)
+                    size = os.path.getsize(path)
+                    if total + min(size, FILE_LIMIT) > limit:
+                        cut.append('%s (%d bytes): over the %d MB a run sends back'
+                                   % (rel, size, limit // 2 ** 20))
+                        continue
+                    if size > FILE_LIMIT:
+                        with open(path, 'rb') as f:
+                            head = f.read(FILE_LIMIT // 2)
+                            f.seek(size - FILE_LIMIT // 2)
+                            data = head + b'\n[... cut by the grader ...]\n' + f.read()
+                        cut.append('%s: %d bytes, its middle cut' % (rel, size))
+                    else:
+                        with open(path, 'rb') as f:
+                            data = f.read()
+                    info = tarfile.TarInfo(rel)
+                    info.size = len(data)
+                    archive.addfile(info, io.BytesIO(data))
+                    total += len(data)
+    return buffer.getvalue(), cut
+
+
+def unpack_run(data, run_dir):
+    """The run's directory from ``pack_run``'s bytes (regular files only, inside it)."""
+    shutil.rmtree(run_dir, ignore_errors=True)
+    os.makedirs(run_dir)
+    root = os.path.realpath(run_dir)
+    with tarfile.open(fileobj=io.BytesIO(data), mode='r:gz') as archive:
+        for member in archive:
+            target = os.path.realpath(os.path.join(run_dir, member.name))
+            if not member.isfile() or not target.startswith(root + os.sep):
+                continue
+            os.makedirs(os.path.dirname(target), exist_ok=True)
+            with archive.extractfile(member) as src, open(target, 'wb') as out:
+                shutil.copyfileobj(src, out)
+
+
+def _watch(run, stop):
+    """Until the run is over, ask ``stop`` whether the teacher cancelled it.
+    A ``stop`` that fails (the grading's connection closing as it ends) is
+    no cancellation: the run goes on, and nothing is printed."""
+    while not run.stop_event.is_set() and run.state != 'done':
+        try:
+            cancelled = stop()
+        except Exception:       # noqa: BLE001 (Dask's comm errors have no common base)
+            if run.state == 'done':
+                return
+            time.sleep(1.0)
+            continue
+        if cancelled:
+            run.stop_event.set()
+            return
+
+
+def run_task(payload, stop=None, scratch_root=None):
+    """Run one payload (see cluster.payload) here; returns {'result', 'archive'}.
+
+    ``stop``: a function that waits a moment (a second) and says whether the
+    teacher cancelled the grading; called until the run is over."""
+    mine = package_version()
+    if payload['version'] != mine:
+        raise VersionMismatch('this worker has exp_assignment2 %s, the teacher %s: it '
+                              'refuses the run' % (mine, payload['version']))
+    scratch = tempfile.mkdtemp(prefix='exp2-grade-', dir=scratch_root)
+    try:
+        spec = RunSpec.from_dict(payload['spec'])
+        kind = payload['packed_kind']
+        source = os.path.join(scratch, 'submission' + {'zip': '.zip', 'tar': '.tar.gz'}[kind])
+        with open(source, 'wb') as f:
+            f.write(payload['data'])
+        submission = Submission(spec.name, source, kind)
+        submission.display_path = spec.path
+        settings = RunSettings(spec.profile, os.path.join(scratch, 'runs'),
+                               hidden=spec.hidden + [scratch],
+                               real_time_factor=spec.real_time_factor,
+                               duration=spec.duration, version=mine)
+        run = Run(settings, spec, submission=submission)
+        watcher = None
+        if stop is not None:
+            watcher = threading.Thread(target=_watch, args=(run, stop), daemon=True)
+            watcher.start()
+        try:
+            result = run.go()
+        finally:
+            if watcher is not None:     # its last look ends within stop()'s second
+                run.state = 'done'
+                watcher.join(5.0)
+        data, cut = pack_run(run.dir)
+        if cut:
+            result['cut'] = cut
+        return {'result': result, 'archive': data}
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)

@@ -1,0 +1,222 @@
+"""The similarity report (issue 42): ``similarity.html`` (pairs ranked, a
+histogram of all pairs, the shared passages side by side), ``similarity.json``
+for scripts, and a column of each submission's highest pair in ``index.html``.
+Made from a :class:`~exp_assignment2.grading.similarity.fingerprints.Result`; no ROS.
+Every student text is escaped: a file may hold anything.
+"""
+import collections
+import html
+import json
+import os
+import re
+
+from exp_assignment2.grading.similarity import fingerprints as similarity
+from exp_assignment2.grading.report.html import IMAGES_JS, e as _e, head
+
+DETAILED = 30           # pairs shown side by side (the rest: ranked, in the JSON)
+LISTED = 200            # pairs in the page's table
+BINS = 20
+STYLE = '''body{max-width:1400px}pre{padding:6px;font-size:11px;max-height:40em;margin:0}
+mark{background:#ffd54f}.side{display:flex;gap:8px}
+.side>div{flex:1;min-width:0}.note{background:#e3f2fd;padding:8px;border-left:4px solid #1976d2}'''
+
+NOT_A_VERDICT = ('Similarity is not a verdict: it changes no verdict and no score. It is a '
+                 'list for a person to read, as MOSS and JPlag say of theirs: shared code can '
+                 'come from a source both used, from working together as allowed, or from the '
+                 'course; and copied code that was rewritten by hand is not found.')
+
+
+def _slug(a, b):
+    return 'pair-' + re.sub(r'[^A-Za-z0-9_-]', '_', '%s--%s' % (a, b))
+
+
+def all_shares(result):
+    """Every pair's share, those that share nothing as 0 (they are the bulk
+    the histogram shows an outlier against)."""
+    count = len(result.submissions)
+    return [p[0] for p in result.pairs] + [0.0] * (count * (count - 1) // 2 - len(result.pairs))
+
+
+def histogram(shares, bins=BINS):
+    """Counts of ``shares`` (0..1) in ``bins`` equal bins."""
+    counts = [0] * bins
+    for share in shares:
+        counts[min(bins - 1, int(share * bins))] += 1
+    return counts
+
+
+def histogram_svg(counts, pair_count):
+    """An SVG histogram (log-scaled heights, so that one outlier shows beside thousands)."""
+    import math
+    width, height, left, bottom = 640, 220, 40, 30
+    bar = (width - left - 25) / float(len(counts))     # room for the last label
+    top = math.log10(max(counts) + 1) or 1
+    parts = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" '
+             'font-family="sans-serif" font-size="11">' % (width, height),
+             '<rect width="100%" height="100%" fill="white"/>']
+    for i, count in enumerate(counts):
+        h = (height - bottom - 20) * math.log10(count + 1) / top
+        x, y = left + i * bar, height - bottom - h
+        parts.append('<rect x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="%s"/>' % (
+            x + 1, y, bar - 2, h, '#c62828' if i >= len(counts) // 2 else '#1976d2'))
+        if count:
+            parts.append('<text x="%.1f" y="%.1f" text-anchor="middle">%d</text>'
+                         % (x + bar / 2, y - 3, count))
+    for i in range(0, len(counts) + 1, len(counts) // 5):
+        parts.append('<text x="%.1f" y="%d" text-anchor="middle">%d%%</text>'
+                     % (left + i * bar, height - bottom + 14, 100 * i // len(counts)))
+    parts.append('<text x="%d" y="%d">shared code, share of the smaller submission '
+                 '(%d pairs; heights on a log scale)</text>'
+                 % (left, height - 4, pair_count))
+    parts.append('</svg>')
+    return ''.join(parts)
+
+
+def _highlighted(text, ranges):
+    """``text`` escaped, with ``ranges`` [(start, end)] marked."""
+    out, at = [], 0
+    for start, end in sorted(ranges):
+        start = max(start, at)
+        if end <= start:
+            continue
+        out.append(_e(text[at:start]) + '<mark>' + _e(text[start:end]) + '</mark>')
+        at = end
+    out.append(_e(text[at:]))
+    return ''.join(out)
+
+
+def _base_groups(result, shown=3, longest=600):
+    """[(file, passages, most carriers, [texts])] of the base code, by file:
+    the texts are the file's base passages merged where they touch (a
+    fingerprint alone covers 25 token characters: too little to read)."""
+    groups = collections.defaultdict(list)
+    for h, (carriers, name, rel, _) in result.base.items():
+        groups[(rel, name)].append((carriers, h))
+    subs = {s.name: s for s in result.submissions}
+    out = []
+    for (rel, name), items in sorted(groups.items(), key=lambda kv: -len(kv[1])):
+        fp = subs[name].files[rel]
+        ranges = sorted(similarity.raw_range(fp, int(i), int(i) + fp.k)
+                        for _, h in items for i in fp.hash_idx.get(h, ()))
+        merged = []
+        for start, end in ranges:
+            if merged and start <= merged[-1][1]:
+                merged[-1][1] = max(merged[-1][1], end)
+            else:
+                merged.append([start, end])
+        merged.sort(key=lambda r: r[0] - r[1])
+        texts = [fp.raw_code[a:min(b, a + longest)] for a, b in merged[:shown]]
+        out.append((rel, len(items), max(c for c, _ in items), texts))
+    return out
+
+
+def to_json(result, templates):
+    """What similarity.json holds: settings, every pair, each submission's top, base code."""
+    top = result.top_for()
+    return {
+        'note': NOT_A_VERDICT, 'templates': list(templates),
+        'base_limit': result.base_limit, 'template_fingerprints': result.template_count,
+        'noise_threshold': similarity.NOISE, 'guarantee_threshold': similarity.GUARANTEE,
+        'submissions': [{'name': s.name, 'files': sorted(s.files), 'size': int(s.size),
+                         'top_share': top.get(s.name, (0.0, None))[0],
+                         'top_with': top.get(s.name, (0.0, None))[1]}
+                        for s in result.submissions],
+        'pairs': [{'a': a, 'b': b, 'share': round(float(share), 4), 'shared': int(shared)}
+                  for share, shared, a, b in result.pairs],
+        'base_code': [{'file': rel, 'carriers': int(carriers), 'first_in': name, 'text': text}
+                      for carriers, name, rel, text in sorted(result.base.values())]}
+
+
+def _pair_section(result, share, a, b):
+    subs = {s.name: s for s in result.submissions}
+    parts = ['<h3 id="%s">%s and %s: %.0f%%</h3>' % (_slug(a, b), _e(a), _e(b), 100 * share)]
+    passages = similarity.shared_passages(subs[a], subs[b])
+    if not passages:
+        parts.append('<p>No passage to show.</p>')
+    for rel_a, rel_b, ranges_a, ranges_b in passages:
+        parts.append('<div class="side"><div><b>%s</b>: %s<pre>%s</pre></div><div><b>%s</b>: '
+                     '%s<pre>%s</pre></div></div>' % (
+                         _e(a), _e(rel_a), _highlighted(subs[a].files[rel_a].raw_code, ranges_a),
+                         _e(b), _e(rel_b), _highlighted(subs[b].files[rel_b].raw_code, ranges_b)))
+    return ''.join(parts)
+
+
+def page(result, templates):
+    """similarity.html's text."""
+    pairs = result.pairs
+    parts = [head('Similarity', STYLE, IMAGES_JS),
+             '<h1>Code shared between submissions</h1><p class="note">%s</p>' % _e(NOT_A_VERDICT),
+             '<p>%d submissions, %d pairs sharing code beyond template and base code (the '
+             'others share none). Template: %s (%d fingerprints never counted). Base code: a '
+             'passage found in more than %d submissions (%d fingerprints, listed below).</p>'
+             % (len(result.submissions), len(pairs),
+                _e(', '.join(templates) or 'none given'), result.template_count,
+                result.base_limit, len(result.base)),
+             '<p><img src="similarity-histogram.svg" alt="histogram of all pairs"></p>',
+             '<h2>Pairs, most shared first</h2><table><thead><tr><th>#</th><th>pair</th>'
+             '<th>shared, of the smaller</th><th>shared (token characters)</th></tr>'
+             '</thead><tbody>']
+    for rank, (share, shared, a, b) in enumerate(pairs[:LISTED], 1):
+        name = '%s and %s' % (_e(a), _e(b))
+        if rank <= DETAILED:
+            name = '<a href="#%s">%s</a>' % (_slug(a, b), name)
+        parts.append('<tr><td>%d</td><td>%s</td><td>%.0f%%</td><td>%d</td></tr>'
+                     % (rank, name, 100 * share, shared))
+    parts.append('</tbody></table>')
+    if len(pairs) > LISTED:
+        parts.append('<p>%d more pairs in similarity.json.</p>' % (len(pairs) - LISTED))
+    parts.append('<h2>Shared passages, side by side</h2>')
+    parts += [_pair_section(result, share, a, b) for share, _, a, b in pairs[:DETAILED]]
+    parts.append('<h2>Base code: passages in more than %d submissions, never counted</h2>'
+                 '<table><thead><tr><th>file (where first seen)</th><th>passages</th>'
+                 '<th>most submissions</th><th>examples</th></tr></thead><tbody>'
+                 % result.base_limit)
+    for rel, count, most, examples in _base_groups(result):
+        parts.append('<tr><td>%s</td><td>%d</td><td>%d</td><td>%s</td></tr>' % (
+            _e(rel), count, most, ''.join('<pre>%s</pre>' % _e(t) for t in examples)))
+    parts.append('</tbody></table></body></html>')
+    return ''.join(parts)
+
+
+def write(out, result, templates=()):
+    """similarity.html, similarity-histogram.svg and similarity.json in ``out``."""
+    os.makedirs(out, exist_ok=True)
+    with open(os.path.join(out, 'similarity-histogram.svg'), 'w') as f:
+        f.write(histogram_svg(histogram(all_shares(result)), len(all_shares(result))))
+    with open(os.path.join(out, 'similarity.html'), 'w') as f:
+        f.write(page(result, templates))
+    with open(os.path.join(out, 'similarity.json'), 'w') as f:
+        json.dump(to_json(result, templates), f, indent=1)
+    annotate_index(out)
+
+
+def annotate_index(out):
+    """index.html with a link to similarity.html and a column of each
+    submission's highest pair, when both files are there (after the grading's
+    report.write, which writes the index afresh)."""
+    index, data = os.path.join(out, 'index.html'), os.path.join(out, 'similarity.json')
+    if not (os.path.isfile(index) and os.path.isfile(data)):
+        return
+    with open(data) as f:
+        tops = {s['name']: s for s in json.load(f)['submissions']}
+    with open(index) as f:
+        text = f.read()
+    if 'similarity.html' in text:
+        return
+    text = text.replace('</h1>', '</h1><p><a href="similarity.html">Code shared between '
+                        'submissions</a> (not a verdict)</p>', 1)
+    text = text.replace('<th onclick="sortBy(this)">submission</th>',
+                        '<th onclick="sortBy(this)">submission</th>'
+                        '<th onclick="sortBy(this)">most shared with</th>', 1)
+
+    def cell(match):
+        name = html.unescape(match.group(2))
+        top = tops.get(name) or {}
+        if not top.get('top_with'):
+            return match.group(0) + '<td data-key="0">—</td>'
+        return match.group(0) + '<td data-key="%.4f"><a href="similarity.html#%s">%.0f%% %s</a>' \
+            '</td>' % (top['top_share'], _slug(*sorted((name, top['top_with']))),
+                       100 * top['top_share'], _e(top['top_with']))
+    text = re.sub(r'<tr><td><a href="pages/([^"]*)\.html">([^<]*)</a></td>', cell, text)
+    with open(index, 'w') as f:
+        f.write(text)
