@@ -170,7 +170,8 @@ def capture(name, directory):
 
 if __name__ == '__main__':
     # this repository's src first: the student's package may be called exp_assignment2 too
-    sys.path[0] = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
+    # src/exp_assignment2/grading/run/display.py -> src, where the library is
+    sys.path[0] = os.path.realpath(__file__).rsplit(os.sep + 'exp_assignment2' + os.sep, 1)[0]
     if len(sys.argv) == 4 and sys.argv[1] == 'capture':
         capture(sys.argv[2], sys.argv[3])
     else:
