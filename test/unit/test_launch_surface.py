@@ -16,6 +16,7 @@ from exp_assignment2.launch_surface.xacro_runner import xacro_argv
 from exp_assignment2.original_env import launch_packages
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+LIBRARY = os.path.join(REPO, 'src')      # where the stand-ins import the library from
 PACKAGES = launch_packages.PACKAGES
 STUDENT = os.path.join(REPO, 'test', 'fixtures', 'student_pkg')
 
@@ -30,8 +31,8 @@ def test_gzserver_reads_a_launch_files_command_line(tmp_path):
                               '__log:=/tmp/gazebo-1.log'])
     assert cmd == gzserver.ServerCommand(str(world), True, True, [],
                                          ['__name:=gazebo', '__log:=/tmp/gazebo-1.log'])
-    assert gzserver.simulator_argv(cmd, repo='/r') == [
-        '/usr/bin/python3', '/r/scripts/simulator.py', '__name:=gazebo',
+    assert gzserver.simulator_argv(cmd, scripts='/r/lib') == [
+        '/usr/bin/python3', '/r/lib/simulator.py', '__name:=gazebo',
         '__log:=/tmp/gazebo-1.log', '_world_file:=%s' % json.dumps(str(world)), '_paused:=true']
 
 
@@ -211,7 +212,7 @@ def test_xacro_runs_the_students_robot_with_find_resolved(tmp_path):
     # the fixture is a package named exp_assignment2: $(find exp_assignment2) must give it
     # (alone on the path: test/fixtures may hold other packages of that name)
     os.symlink(STUDENT, str(tmp_path / 'exp_assignment2'))
-    env = dict(os.environ, ROS_PACKAGE_PATH=str(tmp_path), EXP2_REPO=REPO)
+    env = dict(os.environ, ROS_PACKAGE_PATH=str(tmp_path), EXP2_LIBRARY=LIBRARY)
     proc = subprocess.run(['/usr/bin/python3', os.path.join(PACKAGES, 'xacro', 'xacro'),
                            '--inorder',
                            os.path.join(STUDENT, 'urdf', 'robot.xacro')], env=env,
@@ -245,7 +246,7 @@ def test_xacro_reads_yaml_as_noetics_does(tmp_path):
             '<limit upper="${%s}" lower="${dims.neck.lower}" effort="1" velocity="1"/>'
             '</joint><link name="head"/></robot>' % upper)
         return subprocess.run(['/usr/bin/python3', os.path.join(PACKAGES, 'xacro', 'xacro'),
-                               str(robot)], env=dict(os.environ, EXP2_REPO=REPO),
+                               str(robot)], env=dict(os.environ, EXP2_LIBRARY=LIBRARY),
                               stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                               universal_newlines=True, timeout=60)
     proc = run('dims.neck.upper')

@@ -54,7 +54,7 @@ print(raw.encoding, raw.width, raw.height, tuple(int(v) for v in image[20, 30]),
 
 
 def test_a_jpeg_stream_goes_raw_and_back(ros_master):
-    env = dict(ros_master, EXP2_REPO=REPO)
+    env = dict(ros_master, EXP2_LIBRARY=os.path.join(REPO, 'src'))
     nodes = [subprocess.Popen([PYTHON, REPUBLISH, 'compressed', 'in:=/cam', 'raw', 'out:=/raw',
                                '__name:=decompress'], env=env),
              subprocess.Popen([PYTHON, REPUBLISH, 'raw', 'in:=/raw', 'compressed',

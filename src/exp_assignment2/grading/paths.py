@@ -1,15 +1,17 @@
-"""Where things are in this repository: found here once, imported by the rest.
+"""Where the grader's files are, found once (:mod:`exp_assignment2.layout`
+decides between the source tree and an install space) and imported by the rest.
 
-No import of the package: ``run/inside.py`` runs in the sandbox as a script
-and finds this file beside its own folder (the standard library only).
+``ROOT`` holds everything of this package (a run's sandbox shows it
+read-only); ``PACKAGE`` is the ROS package (its launch files, URDFs, the
+profiles in config/grading); ``SRC`` the folder holding the Python package
+(the repository's src/, or an install space's dist-packages).
 """
 import os
 
-# src/exp_assignment2/grading/paths.py -> the repository (the workspace links to it)
+from exp_assignment2.layout import LIBRARY as SRC, PACKAGE, ROOT, SCRIPTS, STAND_INS  # noqa: F401
+
 GRADING = os.path.dirname(os.path.realpath(__file__))
-SRC = os.path.dirname(os.path.dirname(GRADING))
-REPO = os.path.dirname(SRC)
 INSIDE = os.path.join(GRADING, 'run', 'inside.py')
-SIMULATOR = os.path.join(REPO, 'scripts', 'simulator.py')
-PROFILE_DIR = os.path.join(REPO, 'config', 'grading')
-PACKAGE_XML = os.path.join(REPO, 'package.xml')
+SIMULATOR = os.path.join(SCRIPTS, 'simulator.py')
+PROFILE_DIR = os.path.join(PACKAGE, 'config', 'grading')
+PACKAGE_XML = os.path.join(PACKAGE, 'package.xml')

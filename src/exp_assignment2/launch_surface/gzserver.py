@@ -16,8 +16,8 @@ import os
 import sys
 from collections import namedtuple
 
-REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                     '..', '..', '..'))
+from exp_assignment2.layout import SCRIPTS
+
 PYTHON = '/usr/bin/python3'
 ENGINES = ('ode', 'bullet', 'simbody', 'dart')
 EMPTY_WORLDS = ('worlds/empty.world', 'empty.world')
@@ -117,9 +117,10 @@ def resolve_world(name, environ):
                      % (name, environ.get('GAZEBO_RESOURCE_PATH', '')))
 
 
-def simulator_argv(command, repo=REPO):
-    """The simulator's command line for a :class:`ServerCommand`."""
-    argv = [PYTHON, os.path.join(repo, 'scripts', 'simulator.py')] + list(command.ros_args)
+def simulator_argv(command, scripts=SCRIPTS):
+    """The simulator's command line for a :class:`ServerCommand` (``scripts``:
+    the folder of this package's executables, in its source tree or installed)."""
+    argv = [PYTHON, os.path.join(scripts, 'simulator.py')] + list(command.ros_args)
     # the value is read as YAML: a JSON string is a YAML string, whatever the path holds
     argv.append('_world_file:=%s' % json.dumps(command.world or ''))
     if command.paused:

@@ -15,8 +15,10 @@ hooks on:
   real module is never shadowed; the shims also come last.
 * ROS_PACKAGE_PATH: $EXP2_LAUNCH_PACKAGES (the executable copy of
   stand_in_packages/: gazebo_ros, xacro, controller_manager, image_transport for
-  the user's launch files; stand_in_packages/README.md) first; EXP2_REPO: this
-  repository.
+  the user's launch files; stand_in_packages/README.md) first; EXP2_LIBRARY:
+  the folder holding this Python package, where those wrappers import it from;
+  EXP2_REPO: everything of this package (the repository, or the install
+  space's prefix: :mod:`exp_assignment2.layout`), whose scripts start as they are.
 * PATH: $EXP2_ORIGINAL_BIN (``python``, ``python2``, ``python3``:
   programs/python_launcher.sh, /usr/bin/python3 with Python 2's tab rule for a
   script, also for ``#!/usr/bin/env python`` scripts such as the original's;
@@ -40,12 +42,12 @@ import shutil
 import subprocess
 import sys
 
+from exp_assignment2 import layout
 from exp_assignment2.original_env import launch_packages
 from exp_assignment2.original_env.overlay.build import BuildFailed, build, log
 from exp_assignment2.original_env.sourcing import sourced
 
 HERE = os.path.dirname(os.path.realpath(__file__))
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
 STARTUP = os.path.join(HERE, 'startup')
 PROGRAMS = os.path.join(HERE, 'programs')
 PYTHON = '/usr/bin/python3'
@@ -105,7 +107,8 @@ def compute(environ):
         'ROS_PACKAGE_PATH': _join(environ.get('EXP2_LAUNCH_PACKAGES') or
                                   launch_packages.PACKAGES,
                                   environ.get('ROS_PACKAGE_PATH', '')),
-        'EXP2_REPO': REPO,
+        'EXP2_REPO': layout.ROOT,
+        'EXP2_LIBRARY': layout.LIBRARY,
         'PYTHONPATH': _join(STARTUP, base, *shims),
         'PATH': _join(environ.get('EXP2_ORIGINAL_BIN', ''), '/usr/bin', '/bin',
                       environ.get('PATH', '')),
@@ -123,7 +126,10 @@ def environment(package_dir=None, more=(), workspace=None, environ=None, bin_dir
     catkin package, or None) with the ``more`` packages beside it (``--with``).
 
     ``workspace``: the catkin workspace (default ``$EXP2_WS``, else
-    ~/.cache/exp_assignment2_ws); ``bin_dir``: where the programs first on PATH
+    ~/.cache/exp_assignment2_ws) whose devel space is sourced; from an install
+    space, that install space is sourced and the workspace only holds this
+    environment's own files (:func:`exp_assignment2.layout.underlay_setup`);
+    ``bin_dir``: where the programs first on PATH
     are written (default WORKSPACE/original_env_bin); ``overlay_root``: where
     the overlay is built (default ``$EXP2_OVERLAY_ROOT``, else
     WORKSPACE/overlays). Raises :class:`NoWorkspace` or
@@ -138,7 +144,7 @@ def environment(package_dir=None, more=(), workspace=None, environ=None, bin_dir
     first = '/usr/bin:/bin:/usr/sbin:/sbin'
     if not (environ.get('PATH', '') + ':').startswith(first + ':'):
         environ['PATH'] = _join(first, environ.get('PATH', ''))
-    setup = os.path.join(workspace, 'devel', 'setup.bash')
+    setup = layout.underlay_setup(workspace)
     if not os.path.isfile(setup):
         raise NoWorkspace('no catkin workspace at %s: build it first with: bash tools/run setup'
                           % workspace)
@@ -153,6 +159,17 @@ def environment(package_dir=None, more=(), workspace=None, environ=None, bin_dir
     # real smach (or smach_ros) is never shadowed.
     env.update(compute(env))
     return env
+
+
+def prepare(workspace, environ):
+    """Make what :func:`environment` reads from ``workspace`` but cannot write
+    there in a grading run's sandbox (which shows the workspace read-only):
+    the launch packages' copy, decided in the same environment (``environ``,
+    the sandbox's, with the catkin space sourced). Nothing to do without a
+    catkin space: :func:`environment` then says so."""
+    setup = layout.underlay_setup(os.path.expanduser(workspace))
+    if os.path.isfile(setup):
+        launch_packages.install(workspace, environ=sourced(setup, environ))
 
 
 # the terminals students open nodes in (launch-prefix="xterm -e", gnome-terminal in a

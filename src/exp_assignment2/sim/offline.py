@@ -10,11 +10,10 @@ import os
 
 import yaml
 
+from exp_assignment2.layout import PACKAGE
 from exp_assignment2.sim.engine import Engine
 from exp_assignment2.sim.world import parse_world
 
-PACKAGE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
-    os.path.abspath(__file__)))))
 URDF_DIR = os.path.join(PACKAGE, 'urdf')
 ROBOT_MODELS = {'rep103': 'robot.urdf', 'original': 'robot_original.urdf'}
 DESCRIPTION_FILES = {'/robot/robot_description': 'robot.urdf',

@@ -15,12 +15,11 @@ from collections import OrderedDict
 import numpy as np
 import yaml
 
+from exp_assignment2.layout import PACKAGE
 from exp_assignment2.sim.sdf_geometry import DEFAULT_RGBA, SdfError, pose_of
 from exp_assignment2.sim.sdf_model import Link, Model, flag, read_model
 
-SIZES_FILE = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                           '..', '..', '..', 'config',
-                                           'gazebo_model_sizes.yaml'))
+SIZES_FILE = os.path.join(PACKAGE, 'config', 'gazebo_model_sizes.yaml')
 SIZES_NAME = 'config/gazebo_model_sizes.yaml'
 MAX_INCLUDE_DEPTH = 8
 # A mesh of a model the table does not know, in a link that declares no size (no

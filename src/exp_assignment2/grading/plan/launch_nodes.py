@@ -30,11 +30,12 @@ import sys
 
 
 def _stand_ins():
-    """The folders of stand-in packages (the teacher's side only: the sandbox's
-    side runs as a script, without this package on its path)."""
-    from exp_assignment2.grading.paths import REPO
-    return (os.path.join(REPO, 'src', 'exp_assignment2', 'original_env', 'stand_in_packages'),
-            os.path.join(REPO, 'tools', 'stand_ins'))
+    """The folders of stand-in packages: the launch surface's and the
+    messages' (the teacher's side only: the sandbox's side runs as a script,
+    without this package on its path)."""
+    from exp_assignment2.grading.paths import STAND_INS
+    from exp_assignment2.original_env.launch_packages import PACKAGES
+    return PACKAGES, STAND_INS
 TIMEOUT = 60.0        # wall s to read one submission's launch files
 SANDBOX_USER = 1000   # as a run's sandbox (grading/run/sandbox.py); not imported: the
                       # sandbox's side of this file runs with the standard library only
@@ -63,7 +64,7 @@ def read(request, shown=(), hidden=(), timeout=TIMEOUT):
     if not request.get('launches'):
         return {}
     import shutil
-    from exp_assignment2.grading.paths import REPO
+    from exp_assignment2.grading.paths import PACKAGE, ROOT
     bwrap = shutil.which('bwrap')
     if not bwrap:
         return _all_failed(request, 'not read: bubblewrap (bwrap) is not installed')
@@ -75,11 +76,11 @@ def read(request, shown=(), hidden=(), timeout=TIMEOUT):
     for path in list(hidden) + [os.path.expanduser('~')]:
         if os.path.isdir(path):
             args += ['--tmpfs', path]
-    for path in [REPO] + list(shown):       # put back inside a hidden one
+    for path in [ROOT] + list(shown):       # put back inside a hidden one
         if os.path.isdir(path):
             args += ['--ro-bind', path, path]
     env = {'PATH': '/usr/bin:/bin', 'HOME': '/tmp', 'ROS_HOME': '/tmp/ros', 'LANG': 'C.UTF-8',
-           'ROS_PACKAGE_PATH': ':'.join(list(_stand_ins()) + [REPO, '/usr/share'])}
+           'ROS_PACKAGE_PATH': ':'.join(_unique(list(_stand_ins()) + [PACKAGE, '/usr/share']))}
     args += ['--chdir', '/tmp', '--clearenv']
     for key, value in sorted(env.items()):
         args += ['--setenv', key, value]
@@ -93,6 +94,12 @@ def read(request, shown=(), hidden=(), timeout=TIMEOUT):
     except (OSError, ValueError, IndexError):
         return _all_failed(request, 'not read: the reader failed (%s)' % (
             (locals().get('proc') and proc.stderr.strip().splitlines() or ['no output'])[-1][:200]))
+
+
+def _unique(paths):
+    """The paths in order, each once (an install space's share/ holds this
+    package and the message stand-ins both)."""
+    return [p for i, p in enumerate(paths) if p not in paths[:i]]
 
 
 def _all_failed(request, why):

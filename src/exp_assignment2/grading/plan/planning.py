@@ -28,7 +28,7 @@ from exp_assignment2.grading.plan import packages as packages_
 from exp_assignment2.grading.plan.choose import Context, aliases, choose
 from exp_assignment2.grading.plan.commands import TeacherFileError, read_teacher_file, \
     readme_entries, readme_text
-from exp_assignment2.grading.paths import REPO
+from exp_assignment2.grading.paths import PACKAGE
 from exp_assignment2.grading.plan.spec import RunSpec, settings
 from exp_assignment2.grading.plan.submissions import SubmissionError, discover, unpack
 
@@ -89,7 +89,7 @@ def resolve(package_dir, package, name, teacher, profile, provided, read_launche
                 skipped.add(index)
                 entry['left_out'] = others.get(entry['command']) or \
                     entries[entry['of']]['left_out']
-        launch_packages = dict(ctx.packages, **{sim: REPO})
+        launch_packages = dict(ctx.packages, **{sim: PACKAGE})
         for alias, folder in aliases(entries, ctx).items():    # $(find NAME) for that name too
             launch_packages.setdefault(alias, folder)
         runs, listed = choose(entries, ctx, lambda requests: read_launches(
@@ -169,7 +169,7 @@ def read_submission(submission, scratch, teacher, profile, provided, hidden, kno
     release = ros_release.choose(
         profile['releases'], teacher.get('release') or profile['release'],
         ((teacher.get('submissions') or {}).get(submission.name) or {}).get('release'),
-        root, unpacked.notes, fallback_robot=os.path.join(REPO, 'urdf'))
+        root, unpacked.notes, fallback_robot=os.path.join(PACKAGE, 'urdf'))
     result.update(package=main.name, packages=listed, rejected=None, debian=needs['debian'],
                   build=[p.rel for p in built], release=release['release'],
                   release_why=release['why'], releases_next=release['next'],

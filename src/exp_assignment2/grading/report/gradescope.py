@@ -27,11 +27,11 @@ import sys
 import time
 
 from exp_assignment2.grading.report.feedback import cleaner, to_fix, words
+from exp_assignment2.layout import REPO
 from exp_assignment2.grading.report.html import figure
 
 ROOT_ENV = 'EXP2_AUTOGRADER_ROOT'
 ARGS_ENV = 'EXP2_AUTOGRADER_ARGS'      # more arguments of grade, e.g. "--profile miro"
-REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), '..', '..', '..'))
 
 
 def _text(item_html):
@@ -145,6 +145,9 @@ def main(argv=None):
     parser.add_argument('--root', default=os.environ.get(ROOT_ENV, '/autograder'))
     parser.add_argument('grade_args', nargs='*', help='more arguments of grade (after --)')
     args = parser.parse_args(sys.argv[1:] if argv is None else argv)
+    if REPO is None:        # tools/run sets the machine up and grades: only in the repository
+        parser.error('the autograder runs from the repository (tools/run grade), '
+                     'not from an install space')
     extra = args.grade_args or os.environ.get(ARGS_ENV, '').split()
     data = autograde(os.path.abspath(args.root), ['bash', os.path.join(REPO, 'tools', 'run'),
                                                   'grade'], extra,

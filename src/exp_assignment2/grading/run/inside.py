@@ -18,7 +18,7 @@ happens as JSON lines on its standard output (``display``, ``built``, ``master``
 grader writes ``stop`` on its standard input or closes it.
 
 The student's package may be called ``exp_assignment2`` too: this
-repository's ``src`` comes first on sys.path, so the library is ours.
+package's library folder comes first on sys.path, so the library is ours.
 """
 import json
 import os
@@ -29,10 +29,10 @@ import sys
 import threading
 import time
 
-# run as a script: the grading folder above this one holds paths.py (this
-# repository's src, found once there), imported with the standard library only
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from paths import SRC  # noqa: E402
+# run as a script: the library is three folders above this one's (the
+# repository's src/, or an install space's dist-packages; exp_assignment2.layout)
+SRC = os.path.realpath(os.path.join(os.path.dirname(os.path.realpath(__file__)),
+                                    '..', '..', '..'))
 
 MASTER_WAIT = 30.0      # s for the master to answer
 GRACE = 8.0             # s between SIGINT and SIGTERM, and SIGTERM and SIGKILL

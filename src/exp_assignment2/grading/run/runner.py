@@ -21,12 +21,13 @@ from exp_assignment2.grading.run import ending as run_end
 from exp_assignment2.grading.plan import starts
 from exp_assignment2.grading.judge import verdicts
 from exp_assignment2.grading.plan import packages as packages_
-from exp_assignment2.grading.paths import INSIDE, REPO
+from exp_assignment2.grading.paths import INSIDE, ROOT
 from exp_assignment2.grading.run.files import directory_size, log_sizes, waits_on_wall_clock
 from exp_assignment2.grading.run.sandbox import Sandbox, SandboxError
 from exp_assignment2.grading.plan.submissions import Submission, SubmissionError, package_name, \
     unpack
 from exp_assignment2.grading.run.truth import TruthServer
+from exp_assignment2.original_env import environment as original_env
 from exp_assignment2.launch_surface.viewer import FRAME_RATE_ENV as VIEWER_FRAME_RATE_ENV
 from exp_assignment2.sim.ground_truth import SOCKET_ENV, TOPICS_ENV
 from exp_assignment2.sim.releases import ENV as RELEASE_ENV
@@ -125,8 +126,9 @@ class Run(object):
         # the mount's target)
         bin_dir = os.path.join(ws, 'original_env_bin')
         os.makedirs(bin_dir, exist_ok=True)
+        original_env.prepare(ws, env)       # what the sandbox reads there but cannot write
         return Sandbox(self.label, self.work, hidden=s.hidden + [os.path.expanduser('~')],
-                       readonly=[ws, REPO], sockets=self.sockets,
+                       readonly=[ws, ROOT], sockets=self.sockets,
                        binds=[(os.path.join(self.work, 'original_env_bin'), bin_dir)],
                        memory_mb=profile['memory_limit_mb'],
                        processes=profile['process_limit'], env=env)

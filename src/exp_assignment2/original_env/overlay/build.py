@@ -23,13 +23,12 @@ import signal
 import subprocess
 import sys
 
+from exp_assignment2 import layout
 from exp_assignment2.original_env.overlay import (build_errors, debian_packages, python_package,
                                                   sim_package, source_tree, stand_ins)
 from exp_assignment2.original_env.sourcing import sourced
 
 HERE = os.path.dirname(os.path.realpath(__file__))
-# the repository: src/exp_assignment2/original_env/overlay -> four levels up
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(HERE))))
 
 OWN_PACKAGE = 'exp_assignment2'
 LOCK_TIMEOUT = 3600     # s: another shell building the same overlay
@@ -109,12 +108,14 @@ class Overlay:
 
     def stamp(self, names):
         own = [os.path.join(HERE, f) for f in os.listdir(HERE) if f.endswith('.py')]
-        launch = [os.path.join(r, f) for r, _d, fs in os.walk(os.path.join(REPO, 'launch'))
-                  for f in fs]
+        # this package's launch files, as the second name rewrites them, and what it holds
+        launch = [os.path.join(r, f) for r, _d, fs in os.walk(
+            os.path.join(layout.PACKAGE, 'launch')) for f in fs]
         parts = [self.package_dir, ' '.join(names), source_tree.content_hash(self.package_dir),
                  ' '.join(d + '=' + source_tree.content_hash(d) for d in self.more),
-                 _read(os.path.join(self.workspace, '.build_stamp')), file_hash(own + launch),
-                 ' '.join(sorted(os.listdir(REPO)))]
+                 _read(os.path.join(self.workspace, '.build_stamp')) or '', layout.ROOT,
+                 file_hash(own + launch + [os.path.join(layout.PACKAGE, 'package.xml')]),
+                 ' '.join(sorted(os.listdir(layout.PACKAGE)))]
         return hashlib.sha1('\n'.join(parts).encode('utf-8', 'surrogateescape')).hexdigest()
 
     def up_to_date(self, stamp):
@@ -192,13 +193,15 @@ class Overlay:
         return None
 
     def write_own_package(self, names):
-        """This repository's package as exp_assignment2_sim; one Python exp_assignment2."""
-        sim_package.write_package(REPO, os.path.join(self.path, 'packages', sim_package.NAME))
+        """This package as exp_assignment2_sim; one Python exp_assignment2."""
+        sim_package.write_package(layout.PACKAGE,
+                                  os.path.join(self.path, 'packages', sim_package.NAME),
+                                  scripts=layout.SCRIPTS if layout.INSTALLED else None)
         merged = os.path.join(self.path, 'python', OWN_PACKAGE)
         shutil.rmtree(os.path.dirname(merged), ignore_errors=True)
         if OWN_PACKAGE in names:
             python_package.write_merged(merged, self.devel_python(self.path),
-                                        self.devel_python(self.workspace))
+                                        layout.own_python_package(self.workspace))
 
     @staticmethod
     def devel_python(workspace):
@@ -276,7 +279,7 @@ def build(package_dir, more=(), workspace=None, root=None, environ=None):
             raise BuildFailed('two packages are called %s: give each once (--package, --with)'
                               % ', '.join(twice))
         overlay = Overlay(package_dir, workspace, os.path.realpath(root), more, environ)
-        for outside in [package_dir, REPO] + more:
+        for outside in [package_dir, layout.ROOT] + more:
             if overlay.path == outside or overlay.path.startswith(outside + '/'):
                 raise BuildFailed('the overlay %s would be inside %s: set EXP2_OVERLAY_ROOT'
                                   ' to a directory outside it' % (overlay.path, outside))

@@ -53,7 +53,8 @@ def package_dirs(devel_package):
 
     catkin writes ``__extended_path = '<src>;...'`` into the devel space's
     ``__init__.py`` of a package with ``catkin_python_setup()``; genpy leaves
-    an empty one for a package that only has messages.
+    an empty one for a package that only has messages; an install space's
+    package is one directory, the library and its messages together.
     """
     dirs = [devel_package]
     init = os.path.join(devel_package, '__init__.py')
@@ -68,10 +69,14 @@ def package_dirs(devel_package):
 
 
 def write_merged(target, user_devel_package, own_devel_package):
-    """Write the merged package into ``target`` (``<dir>/exp_assignment2``)."""
+    """Write the merged package into ``target`` (``<dir>/exp_assignment2``);
+    ``own_devel_package``: this package's, in the devel space or installed."""
     user_dirs, own_dirs = package_dirs(user_devel_package), package_dirs(own_devel_package)
-    sources = [os.path.join(d, '__init__.py') for d in own_dirs[1:] + user_dirs[1:]
-               if os.path.exists(os.path.join(d, '__init__.py'))]
+    # the packages' own __init__.py: the sources catkin's relay points at, or
+    # the package itself where there is no relay (an install space's)
+    sources = [os.path.join(d, '__init__.py') for d in own_dirs[1:] or own_dirs[:1]]
+    sources += [os.path.join(d, '__init__.py') for d in user_dirs[1:]]
+    sources = [path for path in sources if os.path.exists(path)]
     os.makedirs(target, exist_ok=True)
     _write(os.path.join(target, '__init__.py'),
            INIT.format(path=[target] + user_dirs + own_dirs, inits=sources))

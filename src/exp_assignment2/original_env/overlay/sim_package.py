@@ -7,8 +7,10 @@ repository's simulator, servers and launch files are reached as
 ``rosrun exp_assignment2_sim go_to_point_ball.py``.
 
 The package is a directory on ROS_PACKAGE_PATH, nothing to build: a
-package.xml, a link to every top-level entry of this repository, and the
-launch files rewritten so that what they find, start and include is
+package.xml, a link to every top-level entry of this package's folder (the
+repository; from an install space, share/exp_assignment2, with ``scripts``
+linking to lib/exp_assignment2, where catkin installs the executables), and
+the launch files rewritten so that what they find, start and include is
 exp_assignment2_sim's (``$(find exp_assignment2)``, ``pkg="exp_assignment2"``,
 ``find('exp_assignment2')`` in ``$(eval ...)``). Nodes learn the name from
 ``EXP2_SIM_PACKAGE`` (the simulator reads its URDF files through it).
@@ -50,17 +52,21 @@ def rewrite_launch(text, name=NAME):
     return text
 
 
-def write_package(repo, target):
-    """(Re)write the second-name package of ``repo`` in ``target``."""
+def write_package(package_dir, target, scripts=None):
+    """(Re)write the second-name package of ``package_dir`` (the folder
+    holding its package.xml) in ``target``; ``scripts``: the folder of its
+    executables when they are not in it (an install space's), linked as scripts/."""
     if os.path.isdir(target):
         shutil.rmtree(target)
     os.makedirs(target)
     with open(os.path.join(target, 'package.xml'), 'w') as f:
         f.write(PACKAGE_XML.format(name=NAME))
-    for entry in sorted(os.listdir(repo)):
+    for entry in sorted(os.listdir(package_dir)):
         if entry not in _NOT_LINKED:
-            os.symlink(os.path.join(repo, entry), os.path.join(target, entry))
-    launch = os.path.join(repo, 'launch')
+            os.symlink(os.path.join(package_dir, entry), os.path.join(target, entry))
+    if scripts:
+        os.symlink(scripts, os.path.join(target, 'scripts'))
+    launch = os.path.join(package_dir, 'launch')
     for root, _dirs, files in os.walk(launch):
         out_dir = os.path.join(target, 'launch', os.path.relpath(root, launch))
         os.makedirs(out_dir, exist_ok=True)
