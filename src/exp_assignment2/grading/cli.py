@@ -12,17 +12,17 @@ import os
 import signal
 import sys
 
+from exp_assignment2.grading import record
 from exp_assignment2.grading.plan import planning
 from exp_assignment2.grading.plan import profiles
 from exp_assignment2.grading.report import index as report
 from exp_assignment2.grading.run import tasks
-from exp_assignment2.grading.run.cluster import Cluster, ClusterError, lost_result, payload, \
-    refused_result, rejected_result, unpack_result
+from exp_assignment2.grading.run.cluster import Cluster, ClusterError, lost_result, not_run, \
+    payload, unpack_result
 from exp_assignment2.grading.plan.commands import TeacherFileError
 from exp_assignment2.grading.progress import Progress
 from exp_assignment2.grading.run.runner import Run, RunSettings
 from exp_assignment2.grading.plan.spec import RunSpec
-from exp_assignment2.grading.plan.planning import traceback_line
 from exp_assignment2.grading.plan.submissions import SubmissionError
 
 # 4: the report is written, but some runs could not be graded (grader_error: run them again)
@@ -133,16 +133,15 @@ def grade(runs, cluster, progress):
         try:
             future = cluster.submit(payload(run, version))
         except Exception as exc:      # noqa: BLE001 -- the grader's fault, this run's only
-            refused_result(run, 'the grader could not send it to a worker (a fault of the '
-                           'grader\'s, not the student\'s): %s' % traceback_line(exc))
+            not_run(run, grader_fault=record.fault('could not send it to a worker', exc))
             return None
         futures[future] = run
         return future
     for run in runs:
         if run.spec.refused:       # the teacher's file is wrong about it, or the grader failed
-            refused_result(run, run.spec.refused)
+            not_run(run, refused=run.spec.refused)
         elif run.spec.rejected:    # nothing to run: it does not unpack, it holds no package
-            rejected_result(run, run.spec.rejected)
+            not_run(run, rejected=run.spec.rejected)
         else:
             send(run)
     pending = set(futures)
@@ -159,9 +158,8 @@ def grade(runs, cluster, progress):
                         RuntimeError) as exc:
                     lost_result(run, exc, cluster.started)
                 except Exception as exc:      # noqa: BLE001 -- this run's grader_error only
-                    refused_result(run, 'the grader failed with this run (a fault of the '
-                                   'grader\'s, not the student\'s): %s' % traceback_line(exc),
-                                   cluster.started.get(run.label) or [])
+                    not_run(run, cluster.started.get(run.label) or [],
+                            grader_fault=record.fault('failed with this run', exc))
                 again = in_next_release(run)
                 if again is not None:       # its checks failed: as its student may have run it
                     runs.append(again)

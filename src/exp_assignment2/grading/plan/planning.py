@@ -29,6 +29,7 @@ from exp_assignment2.grading.plan.choose import Context, aliases, choose
 from exp_assignment2.grading.plan.commands import TeacherFileError, read_teacher_file, \
     readme_entries, readme_text
 from exp_assignment2.grading.paths import REPO
+from exp_assignment2.grading.record import traceback_line
 from exp_assignment2.grading.plan.spec import RunSpec, settings
 from exp_assignment2.grading.plan.submissions import SubmissionError, discover, unpack
 
@@ -260,11 +261,3 @@ def plan(args, out, version, log):
                        log)
     return specs, profile, whence
 
-
-def traceback_line(exc):
-    """``TypeError: ... (planning.py:42)``: the exception and where it was raised."""
-    import traceback
-    frames = traceback.extract_tb(exc.__traceback__)
-    where = ' (%s:%d)' % (os.path.basename(frames[-1].filename), frames[-1].lineno) \
-        if frames else ''
-    return '%s: %s%s' % (type(exc).__name__, str(exc)[:300], where)

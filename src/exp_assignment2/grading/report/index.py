@@ -104,8 +104,8 @@ def _verdict_badge(verdict, pending=0):
 
 def _run_pictures(run, runs_dir, img_dir, profile):
     """The run's figures and chosen frames, copied next to its page."""
-    record = os.path.join(runs_dir, run['label'], 'record')
-    trace = metrics.Trace.from_record(record)
+    record_dir = os.path.join(runs_dir, run['label'], 'record')
+    trace = metrics.Trace.from_record(record_dir)
     roles = roles_.of_run(run, trace, profile)
     label = run['label']
     pictures = {}
@@ -116,12 +116,12 @@ def _run_pictures(run, runs_dir, img_dir, profile):
     if head:
         pictures['head'] = head
     frames, times = {}, {}
-    for moment, source in figures.chosen_frames(record, trace, roles).items():
+    for moment, source in figures.chosen_frames(record_dir, trace, roles).items():
         target = os.path.join(img_dir, '%s_%s.jpg' % (label, moment.replace(' ', '_')))
         shutil.copy(source, target)
         frames[moment], times[moment] = target, figures.frame_time(source)
     pictures['frames'] = frames
-    pictures['windows'] = window_pictures(label, runs_dir, img_dir, record, times)
+    pictures['windows'] = window_pictures(label, runs_dir, img_dir, record_dir, times)
     thumb_source = frames.get('closest approach') or frames.get('end') or top
     if thumb_source:
         thumb = figures.thumbnail(thumb_source, os.path.join(img_dir, label + '_thumb.jpg'))
@@ -143,7 +143,7 @@ def _page(summary, runs, runs_dir, pictures, profile):
                      % _e(', '.join(summary['verdicts'])))
     parts.append('<h2>Started with</h2><p>from %s</p>%s' % (
         _e(main.get('commands_from')), report_starts.table(main)))
-    for note in main.get('notes') or []:
+    for note in record.notes(main):
         parts.append('<p>note: %s</p>' % _e(note))
     parts += report_packages.packages_section(main)
     parts += report_releases.releases_section(main, summary.get('releases'))
@@ -155,7 +155,7 @@ def _page(summary, runs, runs_dir, pictures, profile):
                              else '', 'ran' if c['ran'] else 'a build step' if c.get(
                                  'kind') == 'build' else 'left out', _e(c['why']))
                          for c in main['readme_commands']) + '</table>')
-    for cut in main.get('cut') or []:     # what its worker did not send back whole
+    for cut in record.teacher(main, 'cut'):     # what its worker did not send back whole
         parts.append('<p>cut from what the worker sent back: %s</p>' % _e(cut))
     if summary['checks']:
         parts.append('<h2>Checks</h2><table><tr><th>check</th><th>figure</th><th>threshold</th>'
@@ -190,7 +190,7 @@ def _page(summary, runs, runs_dir, pictures, profile):
                          ' (below 0.95: starved)' if rtf and rtf < 0.95 * (
                              run.get('real_time_factor_asked') or 1) else '',
                          run.get('wall_time', 0.0), run.get('peak_memory_mb') or 0,
-                         _e(' then '.join(run.get('workers') or [])),
+                         _e(' then '.join(record.teacher(run, 'workers'))),
                          _e(run.get('repeat_command'))))
     parts.append('</table>')
     errors = main.get('errors') or []

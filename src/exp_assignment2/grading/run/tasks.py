@@ -4,9 +4,9 @@ either: :mod:`exp_assignment2.grading.run.cluster` hands these to Dask).
 The submission travels as an archive (``pack_submission``); the worker runs
 it in a scratch directory of its own (``run_task``) and sends back the run's
 directory as an archive (``pack_run``): its record, its logs, its build
-log and its windows' pictures, bounded in size (what was cut is said in the result). The teacher's
-side unpacks it where the report expects it (``unpack_run``). No filesystem
-is shared.
+log and its windows' pictures, bounded in size (what was cut is said beside
+it, for the record's teacher's part). The teacher's side unpacks it where
+the report expects it (``unpack_run``). No filesystem is shared.
 """
 import io
 import os
@@ -16,6 +16,7 @@ import tempfile
 import threading
 import time
 
+from exp_assignment2.grading import record
 from exp_assignment2.grading.paths import PACKAGE_XML
 from exp_assignment2.grading.run.runner import Run, RunSettings
 from exp_assignment2.grading.plan.spec import RunSpec
@@ -23,6 +24,7 @@ from exp_assignment2.grading.plan.submissions import MAX_UNPACKED, Submission, c
 
 RETURN_LIMIT = 64 * 1024 * 1024        # bytes of a run's directory sent back
 FILE_LIMIT = 8 * 1024 * 1024           # bytes of one log sent back (its start and end)
+RECORD = os.path.join('record', record.NAME)      # sent whole, first
 KEPT = ('record', 'work/logs', 'work/ros_home/log', 'work/overlay', 'work/display')
 VERSION_ENV = 'EXP2_GRADER_VERSION'    # the version a worker announces (default: package.xml's)
 
@@ -62,10 +64,22 @@ def pack_submission(submission):
         shutil.rmtree(scratch, ignore_errors=True)
 
 
+def _add(archive, rel, data):
+    info = tarfile.TarInfo(rel)
+    info.size = len(data)
+    archive.addfile(info, io.BytesIO(data))
+    return len(data)
+
+
 def pack_run(run_dir, limit=RETURN_LIMIT):
-    """(bytes, [what was cut]) of a run's directory: record and logs."""
+    """(bytes, [what was cut]) of a run's directory: record and logs; its
+    record (run.json) always whole, as the worker wrote it."""
     buffer, cut, total = io.BytesIO(), [], 0
+    own = os.path.join(run_dir, RECORD)
     with tarfile.open(fileobj=buffer, mode='w:gz') as archive:
+        if os.path.isfile(own) and not os.path.islink(own):
+            with open(own, 'rb') as f:
+                total += _add(archive, RECORD, f.read())
         for part in KEPT:
             base = os.path.join(run_dir, part)
             for root, dirs, files in os.walk(base):
@@ -75,9 +89,9 @@ def pack_run(run_dir, limit=RETURN_LIMIT):
                     if part == 'work/overlay' and name != 'build.log':
                         continue
                     path = os.path.join(root, name)
-                    if os.path.islink(path) or not os.path.isfile(path):
-                        continue
                     rel = os.path.relpath(path, run_dir)
+                    if os.path.islink(path) or not os.path.isfile(path) or rel == RECORD:
+                        continue
                     size = os.path.getsize(path)
                     if total + min(size, FILE_LIMIT) > limit:
                         cut.append('%s (%d bytes): over the %d MB a run sends back'
@@ -92,10 +106,7 @@ def pack_run(run_dir, limit=RETURN_LIMIT):
                     else:
                         with open(path, 'rb') as f:
                             data = f.read()
-                    info = tarfile.TarInfo(rel)
-                    info.size = len(data)
-                    archive.addfile(info, io.BytesIO(data))
-                    total += len(data)
+                    total += _add(archive, rel, data)
     return buffer.getvalue(), cut
 
 
@@ -132,7 +143,8 @@ def _watch(run, stop):
 
 
 def run_task(payload, stop=None, scratch_root=None):
-    """Run one payload (see cluster.payload) here; returns {'result', 'archive'}.
+    """Run one payload (see cluster.payload) here; returns {'archive': the run's
+    directory (pack_run), 'cut': what of it was not sent whole}.
 
     ``stop``: a function that waits a moment (a second) and says whether the
     teacher cancelled the grading; called until the run is over."""
@@ -159,14 +171,12 @@ def run_task(payload, stop=None, scratch_root=None):
             watcher = threading.Thread(target=_watch, args=(run, stop), daemon=True)
             watcher.start()
         try:
-            result = run.go()
+            run.go()
         finally:
             if watcher is not None:     # its last look ends within stop()'s second
                 run.state = 'done'
                 watcher.join(5.0)
         data, cut = pack_run(run.dir)
-        if cut:
-            result['cut'] = cut
-        return {'result': result, 'archive': data}
+        return {'archive': data, 'cut': cut}
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
