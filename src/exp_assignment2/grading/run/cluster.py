@@ -146,10 +146,11 @@ class Cluster(object):
                 self.local.close()
 
 
-def payload(run, version):
+def payload(run, version, copies):
     """What a task needs to run one Run anywhere (see tasks.run_task): its
-    specification as a plain dict, and the submission's bytes."""
-    kind, data = tasks.pack_submission(run.submission)
+    specification as a plain dict, and the submission's bytes (packed from
+    its copy in ``copies``, plan.copies.Copies)."""
+    kind, data = tasks.pack_submission(run.submission, copies)
     return {'spec': run.spec.to_dict(), 'packed_kind': kind, 'data': data,
             'label': run.label, 'version': version}
 

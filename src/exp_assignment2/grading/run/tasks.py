@@ -1,8 +1,9 @@
 """A grading run as a task that can go to any machine (no ROS here, no Dask
 either: :mod:`exp_assignment2.grading.run.cluster` hands these to Dask).
 
-The submission travels as an archive (``pack_submission``); the worker runs
-it in a scratch directory of its own (``run_task``) and sends back the run's
+The submission travels as an archive (``pack_submission``, of the teacher's
+side's copy of it: plan.copies); the worker runs it in a scratch directory
+of its own (``run_task``) and sends back the run's
 directory as an archive (``pack_run``): its record, its logs, its build
 log and its windows' pictures, bounded in size (what was cut is said beside
 it, for the record's teacher's part). The teacher's side unpacks it where
@@ -20,7 +21,7 @@ from exp_assignment2.grading import record
 from exp_assignment2.grading.paths import PACKAGE_XML
 from exp_assignment2.grading.run.runner import Run, RunSettings
 from exp_assignment2.grading.plan.spec import RunSpec
-from exp_assignment2.grading.plan.submissions import MAX_UNPACKED, Submission, copy_dir
+from exp_assignment2.grading.plan.submissions import Submission
 
 RETURN_LIMIT = 64 * 1024 * 1024        # bytes of a run's directory sent back
 FILE_LIMIT = 8 * 1024 * 1024           # bytes of one log sent back (its start and end)
@@ -45,23 +46,20 @@ def package_version():
         return 'unknown'
 
 
-def pack_submission(submission):
-    """(kind, bytes): an archive as it is; a directory as a .tar.gz of its
-    files, links inside it followed (SubmissionError for a link out of it:
-    no file of the teacher's machine travels with a submission)."""
+def pack_submission(submission, copies):
+    """(kind, bytes): an archive as it is; a directory as a .tar.gz of the
+    teacher's side's copy of it (``copies``, plan.copies.Copies: links inside
+    it kept, none out of it: no file of the teacher's machine travels with a
+    submission; SubmissionError when it cannot be taken)."""
     if submission.kind != 'dir':
         with open(submission.path, 'rb') as f:
             return submission.kind, f.read()
-    scratch = tempfile.mkdtemp(prefix='exp2-pack-')
-    try:
-        copy = os.path.join(scratch, os.path.basename(submission.path.rstrip('/')) or 'package')
-        copy_dir(submission.path, copy, MAX_UNPACKED)
-        buffer = io.BytesIO()
-        with tarfile.open(fileobj=buffer, mode='w:gz') as archive:
-            archive.add(copy, arcname=os.path.basename(copy))
-        return 'tar', buffer.getvalue()
-    finally:
-        shutil.rmtree(scratch, ignore_errors=True)
+    copy = copies.of(submission)
+    copy.taken()
+    buffer = io.BytesIO()
+    with tarfile.open(fileobj=buffer, mode='w:gz') as archive:
+        archive.add(copy.dest, arcname=os.path.basename(submission.path.rstrip('/')) or 'package')
+    return 'tar', buffer.getvalue()
 
 
 def _add(archive, rel, data):
