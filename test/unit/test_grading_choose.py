@@ -234,9 +234,10 @@ def test_the_plan_reads_an_archive_on_the_teachers_side(tmp_path, monkeypatch):
                      'real_time_factor': 'the command line', 'delay': 'the profile'}
     assert "unknown key 'skipp'" in spec.refused
     (folder / 'grading.yaml').write_text('with: [../course_pkg]\n')
-    with pytest.raises(planning.TeacherFileError, match='with: is not supported'):
+    with pytest.raises(planning.TeacherFileError, match='with: is not supported'), \
+            Copies() as copies:
         planning.plan(args, str(tmp_path / 'out'), '0.1', print, planning.read_settings(args),
-                      [], None)
+                      [], copies)
 
 
 def ran(got):

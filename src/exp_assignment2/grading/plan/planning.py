@@ -235,7 +235,10 @@ def plan(args, out, version, log, read, submissions, copies):
     teacher, chosen, whence = read
     check_with(teacher)
     profile = chosen['profile']
-    hidden = [folder if os.path.isdir(folder) else os.path.dirname(folder), out]
+    # hidden from every run's sandbox and launch reader: the folder, the report and the
+    # class's copies (a local run is on this machine, whatever its temporary directory)
+    hidden = [folder if os.path.isdir(folder) else os.path.dirname(folder), out,
+              copies.scratch]
     provided = launch_nodes.provided_packages()
     known = build_deps.available_debian()
     specs = []
