@@ -93,6 +93,16 @@ def cluster(tmp_path_factory):
             log.close()
 
 
+def records(out, label):
+    """(the run's record as its worker or the teacher's side wrote it, the
+    teacher's part beside it)."""
+    found = []
+    for name in ('run.json', 'teacher.json'):
+        with open(os.path.join(out, 'runs', label, 'record', name)) as f:
+            found.append(json.load(f))
+    return found
+
+
 def grade(cluster, out, *extra, timeout=900):
     return subprocess.run(['bash', RUN, 'grade', cluster['folder'], '--out', out,
                            '--scheduler', cluster['address'], '--duration', '25'] + list(extra),
@@ -109,7 +119,7 @@ def test_the_verdicts_are_the_local_ones_and_runs_spread(cluster):
         report = json.load(f)
     got = {s['name']: s['verdict'] for s in report['submissions']}
     assert got == {n: grading_fixtures.EXPECTED[n] for n in NAMES}
-    workers = {r['workers'][-1] for r in report['runs']}
+    workers = {r['teacher']['workers'][-1] for r in report['runs']}
     assert len(workers) == 2, workers
     # what the runs left on the workers came back: frames, ground truth, logs
     assert report['runs'][[r['label'] for r in report['runs']].index('works')]['truth'][
@@ -135,12 +145,14 @@ def test_a_killed_worker_has_its_run_done_again(cluster):
     os.killpg(victim.pid, signal.SIGKILL)
     output, _ = teacher.communicate(timeout=600)
     assert teacher.returncode == 0, output[-3000:]
-    with open(os.path.join(out, 'runs', 'works', 'record', 'run.json')) as f:
-        run = json.load(f)
+    run, teacher = records(out, 'works')
     assert run['verdict'] == 'passed'
-    assert len(run['workers']) == 2 and run['workers'][0] != run['workers'][1]
-    assert any(n.startswith('run again: its worker %s was lost' % run['workers'][0])
-               for n in run['notes'])
+    workers = teacher['workers']
+    assert len(workers) == 2 and workers[0] != workers[1]
+    # the teacher's side's part, beside the worker's record it never writes again
+    assert teacher['notes'] == ['run again: its worker %s was lost in the middle of the run; '
+                                'done on %s' % tuple(workers)]
+    assert not any(n.startswith('run again') for n in run['notes'])
     cluster['workers'].remove(victim)
 
 
@@ -217,12 +229,11 @@ def test_a_run_whose_workers_keep_dying_is_a_grader_error(cluster):
         # the report is written; exit 4 says a run could not be graded (grade it again)
         assert teacher.returncode == 4, output[-3000:]
         assert "not graded, through a fault of the grader's" in output
-        with open(os.path.join(out, 'runs', 'works', 'record', 'run.json')) as f:
-            run = json.load(f)
+        run, teacher = records(out, 'works')
         assert killed == 4
         assert run['verdict'] == 'grader_error'
         assert run['reason'].startswith('the grader lost this run: '), run['reason']
-        assert len(run['workers']) == 4
+        assert run['lost'] and len(teacher['workers']) == 4
     finally:
         for proc in extra:
             if proc.poll() is None:

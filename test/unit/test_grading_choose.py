@@ -207,6 +207,7 @@ def test_the_plan_reads_an_archive_on_the_teachers_side(tmp_path, monkeypatch):
     import zipfile
     from exp_assignment2.grading.plan import build_deps
     from exp_assignment2.grading.plan import planning
+    from exp_assignment2.grading.plan.copies import Copies
     monkeypatch.setattr(build_deps, 'available_debian', lambda: set())
     monkeypatch.setattr(build_deps, 'install', lambda names, log: None)
     monkeypatch.setattr(launch_nodes, 'provided_packages', lambda: {'gazebo_ros'})
@@ -221,7 +222,10 @@ def test_the_plan_reads_an_archive_on_the_teachers_side(tmp_path, monkeypatch):
     (folder / 'grading.yaml').write_text('duration: 50\nsubmissions:\n  ann:\n    skipp: true\n')
     args = argparse.Namespace(submissions=str(folder), profile=None, duration=None,
                               real_time_factor=3.0, only=None, repeat=1, seed=1)
-    specs, profile, where = planning.plan(args, str(tmp_path / 'out'), '0.1', print)
+    with Copies() as copies:
+        specs, profile, where = planning.plan(args, str(tmp_path / 'out'), '0.1', print,
+                                              planning.read_settings(args),
+                                              planning.entries(args, print), copies)
     (spec,) = specs
     assert (spec.kind, spec.package, spec.commands) == ('zip', 'my_pkg',
                                                        ['roslaunch my_pkg a.launch'])
@@ -230,8 +234,10 @@ def test_the_plan_reads_an_archive_on_the_teachers_side(tmp_path, monkeypatch):
                      'real_time_factor': 'the command line', 'delay': 'the profile'}
     assert "unknown key 'skipp'" in spec.refused
     (folder / 'grading.yaml').write_text('with: [../course_pkg]\n')
-    with pytest.raises(planning.TeacherFileError, match='with: is not supported'):
-        planning.plan(args, str(tmp_path / 'out'), '0.1', print)
+    with pytest.raises(planning.TeacherFileError, match='with: is not supported'), \
+            Copies() as copies:
+        planning.plan(args, str(tmp_path / 'out'), '0.1', print, planning.read_settings(args),
+                      [], copies)
 
 
 def ran(got):

@@ -1,6 +1,6 @@
 """A fault of the grader's with one submission is that submission's
 ``grader_error``, with its cause; the others are graded and the report is
-written (exp_assignment2.grading.plan.planning, runner, cli)."""
+written (exp_assignment2.grading.plan.planning, runner, run.dispatch, cli)."""
 import argparse
 import os
 
@@ -9,6 +9,8 @@ from exp_assignment2.grading import cli
 from exp_assignment2.grading.plan import launch_nodes
 from exp_assignment2.grading.plan import planning
 from exp_assignment2.grading.plan import profiles
+from exp_assignment2.grading.plan.copies import Copies
+from exp_assignment2.grading.run import dispatch
 from exp_assignment2.grading.run.runner import Run, RunSettings
 from exp_assignment2.grading.plan.spec import RunSpec
 
@@ -38,7 +40,10 @@ def test_a_fault_while_reading_one_submission_is_its_grader_error(tmp_path, monk
     args = argparse.Namespace(submissions=str(folder), profile=None, duration=None,
                               real_time_factor=None, only=None, repeat=1, seed=1)
     said = []
-    specs, _, _ = planning.plan(args, str(tmp_path / 'out'), '0.1', said.append)
+    with Copies() as copies:
+        specs, _, _ = planning.plan(args, str(tmp_path / 'out'), '0.1', said.append,
+                                    planning.read_settings(args),
+                                    planning.entries(args, said.append), copies)
     by_name = {s.name: s for s in specs}
     assert by_name['ann'].refused is None and by_name['ann'].package == 'ann'
     assert by_name['bob'].refused.startswith("the grader failed while reading the submission "
@@ -83,7 +88,7 @@ def test_a_rejected_submission_is_not_built_without_a_worker(tmp_path):
 
         def line(self, text):
             pass
-    cli.grade([run], NoCluster(), Quiet())
+    dispatch.grade([run], NoCluster(), Quiet(), None)
     assert (run.result['verdict'], run.result['reason']) == (
         'not_built', 'the submission: not a file nor a folder')
 
@@ -93,7 +98,7 @@ def test_a_run_that_cannot_be_sent_is_its_grader_error(tmp_path, monkeypatch):
     spec = RunSpec(name='ann', path=str(tmp_path / 'gone'), kind='dir', profile=profile,
                    duration=10.0)
     run = Run(RunSettings(profile, str(tmp_path / 'runs')), spec)
-    monkeypatch.setattr(cli, 'payload', lambda run, version: {}['data'])
+    monkeypatch.setattr(dispatch, 'payload', lambda run, version, copies: {}['data'])
 
     class NoCluster(object):
         version, started = '0', {}
@@ -104,7 +109,7 @@ def test_a_run_that_cannot_be_sent_is_its_grader_error(tmp_path, monkeypatch):
     class Quiet(object):
         def show(self, runs):
             pass
-    cli.grade([run], NoCluster(), Quiet())
+    dispatch.grade([run], NoCluster(), Quiet(), None)
     assert run.result['verdict'] == 'grader_error'
     assert run.result['reason'].startswith('the grader could not send it to a worker')
 

@@ -1,5 +1,8 @@
-"""A run's record (exp_assignment2.grading.record): its one writer and one reader."""
+"""A run's record (exp_assignment2.grading.record): its declared fields, its one
+writer (the teacher's part added beside the worker's record) and one reader."""
 import json
+
+import pytest
 
 from exp_assignment2.grading import record
 
@@ -15,6 +18,62 @@ def test_a_record_round_trips(tmp_path):
     assert (back['duration'], back['ended_by']) == (60.0, 'wall_limit')
     assert json.loads(rec.to_json()) == dict(rec)
     assert not (tmp_path / 'runs' / 'ann-r2' / 'record' / 'run.json.tmp').exists()
+
+
+def test_a_record_refuses_a_field_it_does_not_declare(tmp_path):
+    with pytest.raises(TypeError, match="unknown field 'verdcit'"):
+        record.RunRecord.new('ann', 'ann', 1, verdcit='passed')
+    rec = record.RunRecord.new('ann', 'ann', 1)
+    for put in (lambda: rec.__setitem__('cut', []), lambda: rec.update(workers=[]),
+                lambda: rec.setdefault('wokers', [])):
+        with pytest.raises(TypeError):
+            put()
+    with pytest.raises(TypeError, match='unknown teacher field verdict'):
+        record.write(str(tmp_path), teacher={'verdict': 'passed'})
+    with pytest.raises(TypeError):
+        record.write(str(tmp_path), {'name': 'ann', 'who': 'me'})
+    assert not (tmp_path / 'run.json').exists()
+
+
+def test_every_field_the_grader_writes_is_declared_once():
+    names = [key for key, _ in record.FIELDS]
+    assert len(names) == len(set(names)) and all(why for _, why in record.FIELDS)
+    from exp_assignment2.grading.plan.spec import FIELDS as SPEC
+    from exp_assignment2.grading.judge.seen import TOLD
+    # what a run is asked: the spec's fields the runner copies, as the spec says them
+    assert {'commands', 'commands_from', 'readme_commands', 'notes', 'packages', 'release',
+            'release_why', 'duration'} <= set(SPEC) & set(names)
+    assert set(TOLD) <= set(names)
+
+
+def test_the_teachers_part_is_added_beside_the_workers_record(tmp_path):
+    """The teacher's side adds teacher.json; run.json stays as the worker wrote it."""
+    where = str(tmp_path / 'record')
+    worker = record.write(where, record.RunRecord.new('ann', 'ann', 1, verdict='passed',
+                                                      notes=['a note of the run']))
+    written = (tmp_path / 'record' / 'run.json').read_bytes()
+    back = record.write(where, teacher={'workers': ['tcp://a:1', 'tcp://b:2'],
+                                        'notes': ['run again'], 'cut': ['logs/x: cut']})
+    assert (tmp_path / 'record' / 'run.json').read_bytes() == written
+    assert back == dict(worker, teacher={'workers': ['tcp://a:1', 'tcp://b:2'],
+                                         'notes': ['run again'], 'cut': ['logs/x: cut']})
+    assert record.notes(back) == ['a note of the run', 'run again']
+    assert record.teacher(back, 'workers') == ['tcp://a:1', 'tcp://b:2']
+    assert record.teacher(worker, 'cut') == [] and record.notes(worker) == ['a note of the run']
+    # a record written whole (its teacher's part in it) goes to both files
+    whole = str(tmp_path / 'whole')
+    assert record.write(whole, back) == back
+    assert 'teacher' not in json.loads((tmp_path / 'whole' / 'run.json').read_text())
+
+
+def test_a_record_of_an_older_grader_is_read_with_its_teachers_part(tmp_path):
+    """workers and cut were once among the run's own fields."""
+    (tmp_path / 'run.json').write_text(json.dumps({'name': 'ann', 'label': 'ann', 'seed': 1,
+                                                   'workers': ['w1'], 'cut': ['x']}))
+    back = record.load(str(tmp_path))
+    assert back['teacher'] == {'workers': ['w1'], 'cut': ['x']} and 'workers' not in back
+    (tmp_path / 'run.json').write_text(json.dumps({'name': 'ann', 'whatever': 1}))
+    assert record.load(str(tmp_path)) is None
 
 
 def test_every_run_read_and_a_broken_one_left_out(tmp_path):

@@ -3,8 +3,9 @@ hand-made facts and a hand-turned clock, then their precedence, then
 roslaunch's rule that no death but a required node's ends a run."""
 import pytest
 
-from exp_assignment2.grading.run.ending import (BUILD_LIMIT, SIMULATOR_WAIT, TRUTH_QUIET,
-                                             RunFacts, end_reason)
+from exp_assignment2.grading.run.ending import (AT_ONCE, BUILD_LIMIT, NOT_RUN, REASONS,
+                                                SIMULATOR_WAIT, STOP_GRACE, TRUTH_QUIET,
+                                                RunFacts, end_reason, stop_overdue)
 
 T0 = 1000.0         # the clock when the run started
 BUILT = T0 + 20.0   # and when the driver said its build ended
@@ -33,6 +34,8 @@ def test_the_build_has_its_own_limit():
 
 
 @pytest.mark.parametrize('known,now,reason', [
+    (dict(driver_exited=True), BUILT + 1, 'driver_exit'),
+    (dict(build_failed=True), BUILT + 1, 'build_failed'),
     (dict(cancelled=True), BUILT + 1, 'cancelled'),
     (dict(truth=(30.0, BUILT + 20)), BUILT + 20, 'duration'),
     (dict(truth=(4.0, BUILT + 10), required_died='dog-5'), BUILT + 10, 'required_node_died'),
@@ -41,7 +44,7 @@ def test_the_build_has_its_own_limit():
      'all_exited'),
     (dict(), BUILT + SIMULATOR_WAIT + 2 * 5.0 + 0.1, 'no_simulator'),
     (dict(truth=(4.0, BUILT + 10), over_disk=True), BUILT + 10, 'disk_limit'),
-], ids=['cancelled', 'duration', 'required', 'wall', 'all_exited', 'no_simulator', 'disk'])
+], ids=['driver_exit', 'build_failed', 'cancelled', 'duration', 'required', 'wall', 'all_exited', 'no_simulator', 'disk'])
 def test_each_reason_alone(known, now, reason):
     assert end_reason(facts(**known), now) == reason
 
@@ -59,6 +62,10 @@ def test_the_order_is_the_precedence():
     everything = dict(truth=(30.0, BUILT), required_died='dog-5', all_exited=True,
                       over_disk=True)
     late = BUILT + 500
+    assert end_reason(facts(driver_exited=True, build_failed=True, cancelled=True,
+                            **everything), late) == 'driver_exit'
+    assert end_reason(facts(build_failed=True, cancelled=True, **everything), late) == \
+        'build_failed'
     assert end_reason(facts(cancelled=True, **everything), late) == 'cancelled'
     assert end_reason(facts(**everything), late) == 'duration'
     everything['truth'] = (4.0, BUILT)
@@ -68,6 +75,19 @@ def test_the_order_is_the_precedence():
     assert end_reason(facts(**everything), BUILT + 100) == 'all_exited'
     assert end_reason(facts(over_disk=True), BUILT + 101) == 'no_simulator'
     assert end_reason(facts(over_disk=True), BUILT + 99) == 'disk_limit'
+
+
+def test_every_reason_is_listed_and_those_at_once_first():
+    """REASONS is the module's list, in its order; the driver is asked to end
+    its commands for all but the first two, and has STOP_GRACE s to."""
+    assert REASONS[:2] == AT_ONCE == ('driver_exit', 'build_failed')
+    assert len(set(REASONS)) == 10 and NOT_RUN not in REASONS
+    import exp_assignment2.grading.run.ending as ending
+    listed = [line.split('``')[1] for line in ending.__doc__.splitlines()
+              if line[:3].strip().rstrip('.').isdigit()]
+    assert tuple(listed) == REASONS
+    assert not stop_overdue(BUILT, BUILT + STOP_GRACE) and stop_overdue(BUILT,
+                                                                         BUILT + STOP_GRACE + 1)
 
 
 def test_no_death_but_a_required_nodes_ends_a_run():

@@ -17,6 +17,8 @@ sys.path.insert(0, os.path.join(HERE, '..', '..', 'src'))
 pytest.importorskip('copydetect')
 import similarity_fixtures  # noqa: E402
 from exp_assignment2.grading import cli
+from exp_assignment2.grading import record
+from exp_assignment2.grading.plan import profiles
 from exp_assignment2.grading.report import index as report
 from exp_assignment2.grading.similarity import fingerprints as similarity
 from exp_assignment2.grading.similarity import page as similarity_report  # noqa: E402
@@ -109,11 +111,11 @@ def test_student_text_is_escaped(tmp_path):
 def test_report_opens_in_chromium_with_its_image(made, tmp_path):
     root, template, folder = made
     out = str(tmp_path / 'report')
-    os.makedirs(out)
-    summaries = {n: {'name': n, 'verdict': 'passed', 'flaky': False, 'checks': [],
-                     'reason': ''} for n in ('copier', 'student_1')}
-    with open(os.path.join(out, 'index.html'), 'w') as f:      # the grading's own index
-        f.write(report._index(summaries, {}, {'checks': []}, 'Grading'))
+    for name in ('copier', 'student_1'):      # a grading's report, its index without the column
+        record.write(os.path.join(out, 'runs', name, 'record'), record.RunRecord.new(
+            name, name, 1, verdict='passed', reason='', checks=[]))
+    report.write(out, profiles.load('dog'))
+    assert '>most shared with</th>' not in open(os.path.join(out, 'index.html')).read()
     assert cli.main([folder, '--template', template, '--similarity-only', '--out', out]) == 0
     data = json.load(open(os.path.join(out, 'similarity.json')))
     assert (data['pairs'][0]['a'], data['pairs'][0]['b']) == ('copier', 'original')

@@ -24,8 +24,25 @@ ENDED = dict(states=40, sim_time=6.0, ended_at=4.0, duration=30.0, checks=FAILED
 MISSING = {'command': 'roslaunch p a.launch', 'log': 'logs/command-0.log',
            'line': 'ERROR: cannot launch node of type [p/ghost.py]: Cannot locate node'}
 
+FAULT = {'what': 'failed while running it', 'error': 'ZeroDivisionError: division by zero '
+                                                    '(runner.py:12)'}
+# a record's own end (seen.TOLD): nothing of the run was seen
+TOLD = dict(built=False, build_rc=None, ended_by='not_run', sandbox_exit=None)
+
 # one case per rule, in the table's order: (rule name, facts, verdict, reason)
 CASES = [
+    ('refused', dict(TOLD, refused="grading.yaml: submissions: ann: unknown key 'skipp'"),
+     'grader_error', "grading.yaml: submissions: ann: unknown key 'skipp'"),
+    ('lost', dict(TOLD, lost='Attempted to run task grade-ann on 4 different workers'),
+     'grader_error', 'the grader lost this run: Attempted to run task grade-ann on 4 different '
+                     'workers'),
+    ("a fault of the grader's", dict(RUNNING, grader_fault=FAULT),
+     'grader_error', "the grader failed while running it (a fault of the grader's, not the "
+                     "student's): ZeroDivisionError: division by zero (runner.py:12)"),
+    ('cannot be taken', dict(TOLD, rejected='the submission: no package.xml in it'),
+     'not_built', 'the submission: no package.xml in it'),
+    ('no sandbox', dict(TOLD, sandbox_error='bwrap: cannot make the cgroup'),
+     'grader_error', 'bwrap: cannot make the cgroup'),
     ('no display', dict(built=False, build_rc=None, ended_by='driver_exit',
                         display_error='Xvfb could not start: No such file or directory'),
      'grader_error', "the run's display could not be made: Xvfb could not start: No such "
@@ -145,3 +162,45 @@ def test_a_node_that_could_not_start_is_no_verdict_when_the_rest_ran():
 
 def test_a_zero_exit_is_no_death():
     assert decide(Seen(died=[dict(DOG, code=0)], **RUNNING)) == ('passed', '')
+
+
+def test_a_records_own_end_comes_first_the_graders_fault_before_the_students():
+    """Rows 1-5: what the record says itself decides before anything seen of a
+    run; a fault of the grader's with a run that went well, or badly, is the
+    grader's; and grading.yaml's refusal before what the submission holds."""
+    assert decide(Seen(grader_fault=FAULT, **RUNNING))[0] == 'grader_error'
+    assert decide(Seen(grader_fault=FAULT, **dict(ENDED, oom=True)))[0] == 'grader_error'
+    assert decide(Seen(grader_fault=FAULT, rejected='the submission: x', **TOLD))[0] == \
+        'grader_error'
+    assert decide(Seen(refused='grading.yaml: x', rejected='the submission: x', **TOLD)) == (
+        'grader_error', 'grading.yaml: x')
+    assert decide(Seen(rejected='the submission: x', sandbox_error='no bwrap', **TOLD)) == (
+        'not_built', 'the submission: x')
+    # and none of them is told by the rows after: a run that never started
+    assert not Seen(**TOLD).told and Seen(lost='x', **TOLD).told
+
+
+def test_a_record_that_says_its_end_is_judged_on_it_alone(tmp_path):
+    """verdicts.judge reads nothing of a run whose record says its end (no
+    work directory, no logs): its verdict and reason only."""
+    result = {'name': 'ann', 'ended_by': 'not_run', 'rejected': 'the submission: no package'}
+    missing = str(tmp_path / 'nothing')
+    assert verdicts.judge(missing, missing, result, None) == {
+        'verdict': 'not_built', 'reason': 'the submission: no package'}
+    assert verdicts.judge_told(dict(result, lost='KilledWorker')) == {
+        'verdict': 'grader_error', 'reason': 'the grader lost this run: KilledWorker'}
+    with pytest.raises(ValueError):
+        verdicts.judge_told({'name': 'ann', 'ended_by': 'duration'})
+
+
+def test_the_docs_table_lists_the_rules_row_for_row():
+    """docs/grading.md's "Verdicts" table: one row a rule, in RULES' order."""
+    import os
+    import re
+    docs = os.path.join(os.path.dirname(__file__), '..', '..', 'docs', 'grading.md')
+    with open(docs) as f:
+        text = f.read()
+    table = text[text.index('## Verdicts'):text.index('## Isolation')]
+    rows = re.findall(r'^\| (\d+) \| `(\w+)` \|', table, re.M)
+    assert [int(n) for n, _ in rows] == list(range(1, len(RULES) + 1))
+    assert [v for _, v in rows] == [r.verdict for r in RULES]

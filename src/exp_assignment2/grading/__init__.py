@@ -11,7 +11,7 @@
 * :mod:`.report`: the class's pages, the students' pages, Gradescope's files;
 * :mod:`.similarity`: the code submissions share, for a person to read.
 
-On top: :mod:`.cli` (the command line), :mod:`.record` (a run's record, its
-one writer and reader), :mod:`.progress` (the terminal's line) and
+On top: :mod:`.cli` (the command line), :mod:`.record` (a run's record: its
+declared fields, its one writer and reader), :mod:`.progress` (the terminal's line) and
 :mod:`.paths` (where things are in the repository).
 """

@@ -16,13 +16,12 @@ from exp_assignment2.grading.plan import planning
 from exp_assignment2.grading.plan import profiles
 from exp_assignment2.grading.report import index as report
 from exp_assignment2.grading.run import tasks
-from exp_assignment2.grading.run.cluster import Cluster, ClusterError, lost_result, payload, \
-    refused_result, rejected_result, unpack_result
+from exp_assignment2.grading.run.cluster import Cluster, ClusterError
+from exp_assignment2.grading.run.dispatch import grade
 from exp_assignment2.grading.plan.commands import TeacherFileError
+from exp_assignment2.grading.plan.copies import Copies
 from exp_assignment2.grading.progress import Progress
 from exp_assignment2.grading.run.runner import Run, RunSettings
-from exp_assignment2.grading.plan.spec import RunSpec
-from exp_assignment2.grading.plan.planning import traceback_line
 from exp_assignment2.grading.plan.submissions import SubmissionError
 
 # 4: the report is written, but some runs could not be graded (grader_error: run them again)
@@ -80,9 +79,11 @@ def default_jobs(profile):
     return max(1, int(multiprocessing.cpu_count() // float(profile['cpu_per_run'])))
 
 
-def plan_runs(args, profile, out, log):
-    """([Run] for every submission and repeat, in the folder's order; the profile)."""
-    specs, profile, whence = planning.plan(args, out, tasks.package_version(), log)
+def plan_runs(args, out, log, read, submissions, copies):
+    """([Run] for every submission and repeat, in the folder's order; the profile)
+    from what was read once (planning.plan)."""
+    specs, profile, whence = planning.plan(args, out, tasks.package_version(), log, read,
+                                           submissions, copies)
     given = [key for key, where in sorted(whence.items()) if where == 'grading.yaml']
     if given:
         log('from grading.yaml: %s (the command line would be over it)' % ', '.join(given))
@@ -95,6 +96,13 @@ def plan_runs(args, profile, out, log):
     return runs, profile
 
 
+def _outside(folder, out):
+    """SubmissionError when the report would be written inside the folder graded."""
+    if out == folder or out.startswith(folder + os.sep):
+        raise SubmissionError('--out %s is inside the submissions folder, which is only '
+                              'ever read: choose another' % out)
+
+
 def default_out(submissions):
     """``./grading-report``, unless that is inside what is graded (a student
     running ``grade .`` in their package): then beside it, ``NAME-grading-report``."""
@@ -104,103 +112,35 @@ def default_out(submissions):
     return out
 
 
-def in_next_release(run):
-    """The run again in the next ROS release whose plugins behave otherwise
-    for it, when its checks failed in a release it was not told (None: no
-    other to try). ros_release.py; the better run counts (report.py)."""
-    spec, result = run.spec, run.result or {}
-    if not spec.releases_next or result.get('verdict') != 'failed_checks':
-        return None
-    data = spec.to_dict()
-    release = data['releases_next'][0]
-    data.update(release=release, releases_next=data['releases_next'][1:],
-                label='%s-%s' % (spec.label, release),
-                release_why='its checks failed in ROS %s (%s): run again in %s, whose Gazebo '
-                            'plugins behave otherwise for it' % (
-                                spec.release, spec.release_why, release))
-    return Run(run.settings, RunSpec.from_dict(data))
-
-
-def grade(runs, cluster, progress):
-    """Every Run as a Dask task; Ctrl-C ends every run (on every worker) and returns."""
-    from concurrent.futures import CancelledError
-    from distributed import KilledWorker, wait
-    version = cluster.version
-    futures = {}
-
-    def send(run):
-        """The run as a Dask task (its future), or its grader_error (None)."""
-        try:
-            future = cluster.submit(payload(run, version))
-        except Exception as exc:      # noqa: BLE001 -- the grader's fault, this run's only
-            refused_result(run, 'the grader could not send it to a worker (a fault of the '
-                           'grader\'s, not the student\'s): %s' % traceback_line(exc))
-            return None
-        futures[future] = run
-        return future
-    for run in runs:
-        if run.spec.refused:       # the teacher's file is wrong about it, or the grader failed
-            refused_result(run, run.spec.refused)
-        elif run.spec.rejected:    # nothing to run: it does not unpack, it holds no package
-            rejected_result(run, run.spec.rejected)
-        else:
-            send(run)
-    pending = set(futures)
-    try:
-        while pending:
-            cluster.poll_starts()
-            for future in [f for f in pending if f.done()]:
-                pending.discard(future)
-                run = futures[future]
-                cluster.poll_starts()
-                try:
-                    unpack_result(future.result(), run, cluster.started)
-                except (KilledWorker, CancelledError, tasks.VersionMismatch, OSError,
-                        RuntimeError) as exc:
-                    lost_result(run, exc, cluster.started)
-                except Exception as exc:      # noqa: BLE001 -- this run's grader_error only
-                    refused_result(run, 'the grader failed with this run (a fault of the '
-                                   'grader\'s, not the student\'s): %s' % traceback_line(exc),
-                                   cluster.started.get(run.label) or [])
-                again = in_next_release(run)
-                if again is not None:       # its checks failed: as its student may have run it
-                    runs.append(again)
-                    progress.total += 1
-                    pending.update(f for f in [send(again)] if f is not None)
-            for future in pending:
-                run = futures[future]
-                if run.label in cluster.started and run.state == 'waiting':
-                    run.state = 'running'
-            progress.show(runs)
-            try:        # until a run ends, or half a second for the progress line
-                wait(list(pending), timeout=0.5, return_when='FIRST_COMPLETED')
-            except TimeoutError:
-                pass
-        progress.show(runs)
-    except KeyboardInterrupt:
-        progress.line('Ctrl-C: ending every run')
-        cluster.cancel(pending)
-        raise
-
-
 def main(argv=None):
+    """The command line: grading.yaml read once, the folder discovered once,
+    each submission copied once on the teacher's side (plan.copies), the
+    report's index written once, after the similarity step."""
     args = parse_args(sys.argv[1:] if argv is None else argv)
     out = os.path.abspath(args.out) if args.out else default_out(args.submissions)
     log = lambda text: print('[grade] ' + text, file=sys.stderr, flush=True)  # noqa: E731
+    if args.similarity_only:
+        return similarity_only(args, out, log)
     try:
         # the profile by the one precedence: --profile, grading.yaml's, dog
-        if args.similarity_only:
-            return similarity_step(args, out, log)
-        profile = planning.read_settings(args)[1]['profile']
+        read = planning.read_settings(args)
+        profile = read[1]['profile']
         if args.report_only:
             summaries = report.write(out, profile)
             log(summary_line(summaries, out))
             return EXIT_OK
-        folder = os.path.abspath(args.submissions)
-        if out == folder or out.startswith(folder + os.sep):
-            raise SubmissionError('--out %s is inside the submissions folder, which is only '
-                                  'ever read: choose another' % out)
-        runs, profile = plan_runs(args, profile, out, log)
+        _outside(os.path.abspath(args.submissions), out)
+        submissions = planning.entries(args, log)
+    except (profiles.ProfileError, TeacherFileError, SubmissionError) as exc:
+        log(str(exc))
+        return EXIT_USAGE
+    with Copies() as copies:
+        return _grade(args, out, log, read, submissions, copies)
+
+
+def _grade(args, out, log, read, submissions, copies):
+    try:
+        runs, profile = plan_runs(args, out, log, read, submissions, copies)
     except (profiles.ProfileError, TeacherFileError, SubmissionError) as exc:
         log(str(exc))
         return EXIT_USAGE
@@ -222,7 +162,7 @@ def main(argv=None):
     previous = signal.getsignal(signal.SIGTERM)
     signal.signal(signal.SIGTERM, _interrupt)
     try:
-        grade(runs, cluster, progress)
+        grade(runs, cluster, progress, copies)
     except KeyboardInterrupt:
         log('stopped: the report holds the runs that ended')
         report.write(out, profile)
@@ -231,9 +171,14 @@ def main(argv=None):
         signal.signal(signal.SIGTERM, previous)
         progress.close()
         cluster.close()
+    if len({r.spec.name for r in runs}) > 1:    # read by the index, written next
+        try:
+            similarity_step(args, out, log, read[0], submissions, copies)
+        except KeyboardInterrupt:
+            log('stopped: the report holds every run, without the similarity column')
+            report.write(out, profile)
+            return 130
     summaries = report.write(out, profile)
-    if len(summaries) > 1:      # before the last lines, which name the pages
-        similarity_step(args, out, log)
     log(summary_line(summaries, out))
     log(feedback_line(summaries, out))
     ungraded = sorted(n for n, s in summaries.items() if s['verdict'] == 'grader_error')
@@ -256,24 +201,39 @@ def add_similarity_args(parser):
                         help='only the similarity report: nothing built or run')
 
 
-def similarity_step(args, out, log):
-    """The similarity report into ``out``; never changes a verdict or a score."""
-    from exp_assignment2.grading.similarity import step as similarity_run
-    folder = os.path.abspath(args.submissions)
+def similarity_only(args, out, log):
+    """``--similarity-only``: grading.yaml read and the folder discovered for
+    the similarity step alone; the index of a grading's report there written
+    again with its column."""
+    from exp_assignment2.grading.plan.submissions import discover
     try:
-        if out == folder or out.startswith(folder + os.sep):
-            raise SubmissionError('--out %s is inside the submissions folder, which is only '
-                                  'ever read: choose another' % out)
-        teacher = planning.read_settings(args)[0]
-        templates = similarity_run.templates_of(args, teacher, folder)
-        similarity_run.run(folder, out, templates, args.base_share, args.only, log)
+        _outside(os.path.abspath(args.submissions), out)
+        teacher, chosen, _ = planning.read_settings(args)
+        submissions = discover(args.submissions)[0]
+    except (TeacherFileError, SubmissionError, profiles.ProfileError) as exc:
+        log('similarity: %s' % exc)
+        return EXIT_USAGE
+    with Copies() as copies:
+        code = similarity_step(args, out, log, teacher, submissions, copies)
+    if code == EXIT_OK and os.path.isfile(os.path.join(out, 'index.html')):
+        report.write_index(out, chosen['profile'])
+    return code
+
+
+def similarity_step(args, out, log, teacher, submissions, copies):
+    """The similarity report of ``submissions`` (their ``copies``) into ``out``;
+    never changes a verdict or a score."""
+    from exp_assignment2.grading.similarity import step as similarity_run
+    try:
+        templates = similarity_run.templates_of(args, teacher, os.path.abspath(args.submissions))
+        similarity_run.run(submissions, out, templates, copies, args.base_share, args.only, log)
     except ImportError as exc:      # copydetect: tools/run grade installs it
         log('similarity: not made: %s' % exc)
         return EXIT_USAGE
     except (TeacherFileError, SubmissionError, profiles.ProfileError) as exc:
         log('similarity: %s' % exc)
         return EXIT_USAGE
-    except Exception as exc:    # noqa: B902 -- the grades are written: a report's fault ends here
+    except Exception as exc:    # noqa: B902 -- a fault of the similarity's costs no grade
         log('similarity: failed: %s: %s' % (type(exc).__name__, exc))
         return 1
     return EXIT_OK

@@ -11,6 +11,14 @@ from exp_assignment2.grading.judge import metrics
 from exp_assignment2.grading.judge import roles as roles_
 
 
+# the facts a record says itself of an end before or outside its run: the
+# teacher's side refused it (refused), its submission cannot be taken
+# (rejected), Dask gave up on it (lost), the grader failed with it
+# (grader_fault: {'what', 'error'}), or its sandbox could not be made
+# (sandbox_error); nothing of the run is read then
+TOLD = ('refused', 'lost', 'grader_fault', 'rejected', 'sandbox_error')
+
+
 class Seen(object):
     """The facts a verdict is decided on, gathered once (or made by hand in a test)."""
 
@@ -18,7 +26,10 @@ class Seen(object):
                  ended_by='duration', sandbox_exit=0, driver_ended=True, oom=False,
                  states=0, sim_time=0.0, duration=200.0, memory_limit_mb=0, died=(),
                  errors=(), started_nothing=(), launch_errors=(), checks=None,
-                 display_error=None, ended_at=None):
+                 display_error=None, ended_at=None, refused=None, lost=None,
+                 grader_fault=None, rejected=None, sandbox_error=None):
+        self.refused, self.lost, self.grader_fault = refused, lost, grader_fault
+        self.rejected, self.sandbox_error = rejected, sandbox_error
         self.display_error = display_error       # the driver's, when it made no display
         self.ended_at = sim_time if ended_at is None else ended_at     # simulated s at the end
         self.built, self.build_rc, self.build_error = built, build_rc, build_error
@@ -47,6 +58,11 @@ class Seen(object):
         any ground truth)."""
         self._judge()
         return self._roles
+
+    @property
+    def told(self):
+        """The run's record says how it ended before or outside its run (:data:`TOLD`)."""
+        return any(getattr(self, key) for key in TOLD)
 
     @property
     def ran(self):
@@ -116,8 +132,21 @@ def keyboard_waits(run_logs, names):
     return found
 
 
+def told(result):
+    """The :class:`Seen` of a run whose record says itself how it ended before
+    or outside its run (:data:`TOLD`), read from nothing else; else None."""
+    facts = {key: result.get(key) for key in TOLD if result.get(key)}
+    if not facts:
+        return None
+    return Seen(built=False, build_rc=None, ended_by=result.get('ended_by'),
+                sandbox_exit=result.get('sandbox_exit'), **facts)
+
+
 def gather(work, record_dir, result, profile):
-    """The :class:`Seen` of a finished run."""
+    """The :class:`Seen` of a finished run (:func:`told`'s, when its record says it)."""
+    said = told(result)
+    if said is not None:
+        return said
     sizes = result.get('log_sizes') or {}
     run_logs = logs_.run_logs(work, sizes)
     simulators = logs_.simulator_logs(work, sizes)    # the grader's: not the student's errors

@@ -5,35 +5,47 @@ a :class:`~exp_assignment2.grading.judge.seen.Seen` from the run's record, its l
 through :mod:`exp_assignment2.grading.judge.logs`, and its ground truth); the
 verdict is the first rule of :data:`RULES` that holds, as the CARLA
 leaderboard's ``FAILURE_MESSAGES`` table. The table's order is the precedence
-(docs/grading.md, "Verdicts", lists it row by row):
+(docs/grading.md, "Verdicts", lists it row by row). Rows 1-5 are facts a
+run's record says itself (:data:`~exp_assignment2.grading.judge.seen.TOLD`,
+written by the runner or the teacher's side; nothing else is read for them),
+the grader's own faults first, as in rows 6-8:
 
-1. ``grader_error``: the run's display could not be made (nothing of the student's ran);
-2. ``grader_error``: the sandbox did not start (the driver never said the build's end);
-3. ``grader_error``: the simulator died, with no memory limit broken and no
+1. ``grader_error``: the run was refused on the teacher's side (``grading.yaml``
+   is wrong about it, or the grader could not read it): nothing ran;
+2. ``grader_error``: Dask gave up on it, its workers lost too often;
+3. ``grader_error``: the grader itself failed with it (sending it to a
+   worker, running it, judging it, receiving it): what was seen until then
+   is not the student's doing;
+4. ``not_built``: the submission cannot be taken (it does not unpack, it
+   holds no package, it is not a folder or an archive);
+5. ``grader_error``: its sandbox could not be made;
+6. ``grader_error``: the run's display could not be made (nothing of the student's ran);
+7. ``grader_error``: the sandbox did not start (the driver never said the build's end);
+8. ``grader_error``: the simulator died, with no memory limit broken and no
    grader's process killed from inside the sandbox (either would be the
    student's code's doing);
-4. ``not_built``: the submission does not unpack, or catkin fails (its first error);
-5. ``not_started``: a start command started nothing (``RLException``, a launch
-   file that does not parse, ``rosrun`` of a missing node or package, no such
-   program);
-6. ``not_started``: the simulator never reported, and a node of a launch could
-   not be started (its roslaunch's ``cannot launch node`` line);
-7. ``crashed``: the grader's driver in the sandbox was killed from inside it,
-8. ``crashed``: the run used more memory than its limit,
-9. ``crashed``: the run wrote more than its disk limit,
-10. ``crashed``: a ``required="true"`` node died, and roslaunch shut its
+9. ``not_built``: catkin fails (its first error);
+10. ``not_started``: a start command started nothing (``RLException``, a launch
+    file that does not parse, ``rosrun`` of a missing node or package, no such
+    program);
+11. ``not_started``: the simulator never reported, and a node of a launch could
+    not be started (its roslaunch's ``cannot launch node`` line);
+12. ``crashed``: the grader's driver in the sandbox was killed from inside it,
+13. ``crashed``: the run used more memory than its limit,
+14. ``crashed``: the run wrote more than its disk limit,
+15. ``crashed``: a ``required="true"`` node died, and roslaunch shut its
     launch down (``REQUIRED process [NODE] has died!``),
-11. ``crashed``: every command had ended (the system was gone) before the
+16. ``crashed``: every command had ended (the system was gone) before the
     duration, the ground truth having come,
-    each of 7-11 only when some check was not met on the ground truth until
+    each of 12-16 only when some check was not met on the ground truth until
     then (a system that did its work and then ended is judged by its checks);
-12. ``grader_error``: the simulator never reported its ground truth;
-13. ``timed_out``: the build ran past its limit;
-14. ``timed_out``: the run did not reach its simulated duration within its
+17. ``grader_error``: the simulator never reported its ground truth;
+18. ``timed_out``: the build ran past its limit;
+19. ``timed_out``: the run did not reach its simulated duration within its
     wall-clock limit;
-15. ``failed_checks``: some check of the profile failed (the nodes that died
+20. ``failed_checks``: some check of the profile failed (the nodes that died
     named after them);
-16. ``passed``: every check that could be run passed (a check whose robot, head
+21. ``passed``: every check that could be run passed (a check whose robot, head
     or ball could not be told is not run: :mod:`~exp_assignment2.grading.judge.roles`; the reason
     names it, and the nodes that died).
 
@@ -48,9 +60,10 @@ import collections
 import os
 
 from exp_assignment2.grading.judge import logs as logs_
-from exp_assignment2.grading.judge.seen import Seen, gather
+from exp_assignment2.grading.judge.seen import Seen, gather, told
 
-__all__ = ['RULES', 'Seen', 'VERDICTS', 'decide', 'gather', 'judge', 'why_it_died']
+__all__ = ['RULES', 'Seen', 'VERDICTS', 'decide', 'gather', 'judge', 'judge_told',
+           'why_it_died']
 VERDICTS = ('passed', 'failed_checks', 'crashed', 'timed_out', 'not_started', 'not_built',
             'grader_error')
 
@@ -133,7 +146,20 @@ def _checks_reason(s):
     return '; '.join(parts)
 
 
+def _fault_reason(s):
+    return 'the grader %s (a fault of the grader\'s, not the student\'s): %s' % (
+        s.grader_fault['what'], s.grader_fault['error'])
+
+
 RULES = (
+    Rule('grader_error', 'refused', lambda s: bool(s.refused), lambda s: s.refused),
+    Rule('grader_error', 'lost', lambda s: bool(s.lost),
+         lambda s: 'the grader lost this run: %s' % s.lost),
+    Rule('grader_error', "a fault of the grader's", lambda s: bool(s.grader_fault),
+         _fault_reason),
+    Rule('not_built', 'cannot be taken', lambda s: bool(s.rejected), lambda s: s.rejected),
+    Rule('grader_error', 'no sandbox', lambda s: bool(s.sandbox_error),
+         lambda s: s.sandbox_error),
     Rule('grader_error', 'no display', lambda s: bool(s.display_error),
          lambda s: 'the run\'s display could not be made: %s' % s.display_error),
     Rule('grader_error', 'sandbox did not start',
@@ -186,8 +212,20 @@ def decide(seen, rules=RULES):
     raise AssertionError('no rule holds')      # the last one always does
 
 
+def judge_told(result):
+    """The verdict and reason of a run whose record says itself how it ended
+    (:func:`~exp_assignment2.grading.judge.seen.told`): nothing else is read."""
+    seen = told(result)
+    if seen is None:
+        raise ValueError('judge_told: the record says no end of its own (seen.TOLD)')
+    verdict, reason = decide(seen)
+    return {'verdict': verdict, 'reason': reason}
+
+
 def judge(work, record_dir, result, profile):
     """The fields the verdict adds to a run's record."""
+    if told(result) is not None:
+        return judge_told(result)
     seen = gather(work, record_dir, result, profile)
     verdict, reason = decide(seen)
     out = {'verdict': verdict, 'reason': reason, 'errors': seen.errors[:20],

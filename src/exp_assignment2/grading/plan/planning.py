@@ -9,14 +9,15 @@ submission the one place its commands are decided, in this order:
 
 then the profile's ``world_commands`` before them, and ``{package}`` (the
 submission's package name) and ``{sim}`` (this package's name beside it) put
-in. Archives are unpacked into a scratch directory here (with
-``submissions.unpack``'s limits) to read their README, scripts and launch
-files; a directory is copied the same way. The result is a
-:class:`~exp_assignment2.grading.plan.spec.RunSpec` per run.
+in. Each submission is read from the teacher's side's one copy of it
+(:mod:`~exp_assignment2.grading.plan.copies`: an archive unpacked, a
+directory copied, with ``submissions.unpack``'s limits): its README, scripts
+and launch files. The result is a
+:class:`~exp_assignment2.grading.plan.spec.RunSpec` per run. grading.yaml is
+read once (:func:`read_settings`) and the folder discovered once
+(:func:`entries`) by the command line, which hands both down.
 """
 import os
-import shutil
-import tempfile
 
 from exp_assignment2.grading.plan import assignment
 from exp_assignment2.grading.plan import build_deps
@@ -29,8 +30,9 @@ from exp_assignment2.grading.plan.choose import Context, aliases, choose
 from exp_assignment2.grading.plan.commands import TeacherFileError, read_teacher_file, \
     readme_entries, readme_text
 from exp_assignment2.grading.paths import PACKAGE
+from exp_assignment2.grading.record import traceback_line
 from exp_assignment2.grading.plan.spec import RunSpec, settings
-from exp_assignment2.grading.plan.submissions import SubmissionError, discover, unpack
+from exp_assignment2.grading.plan.submissions import SubmissionError, discover
 
 OWN_NAME, SIM_PACKAGE = 'exp_assignment2', 'exp_assignment2_sim'   # see overlay/build.py
 
@@ -133,16 +135,16 @@ def _readme_packages(package_dir, names):
     return named
 
 
-def read_submission(submission, scratch, teacher, profile, provided, hidden, known=None):
+def read_submission(submission, copy, teacher, profile, provided, hidden, known=None):
     """What the teacher's side knows of one submission before it runs,
-    read from a copy in ``scratch``: its packages, which of them the run
+    read from its ``copy`` (copies.Copy): its packages, which of them the run
     builds and why, its commands (:func:`resolve`), and what it needs from
     Debian. A submission that cannot be taken gets ``rejected`` (its
     verdict is ``not_built``, with that reason)."""
     empty = {'package': None, 'commands': [], 'commands_from': '', 'readme_commands': [],
              'notes': [], 'packages': [], 'build': [], 'debian': [], 'rejected': None}
     try:
-        unpacked = unpack(submission, os.path.join(scratch, 'src'))
+        unpacked = copy.taken()
     except SubmissionError as exc:
         return dict(empty, rejected='the submission: %s' % exc)
     found = packages_.find(unpacked.root)
@@ -156,7 +158,7 @@ def read_submission(submission, scratch, teacher, profile, provided, hidden, kno
 
     def read(requests, packages):
         return launch_nodes.read({'launches': requests, 'packages': packages},
-                                 shown=[scratch], hidden=hidden)
+                                 shown=[copy.folder], hidden=hidden)
     own = {p.name: p.path for p in found}
     result = resolve(main.path, main.name, submission.name, teacher, profile,
                      provided | set(own), read, root=root, packages=own,
@@ -181,13 +183,10 @@ def read_submission(submission, scratch, teacher, profile, provided, hidden, kno
     return result
 
 
-def commands_for(submission, teacher, profile, provided, hidden, known=None):
-    """:func:`read_submission` from a scratch copy, removed after."""
-    scratch = tempfile.mkdtemp(prefix='exp2-readme-')
-    try:
-        return read_submission(submission, scratch, teacher, profile, provided, hidden, known)
-    finally:
-        shutil.rmtree(scratch, ignore_errors=True)
+def commands_for(submission, copies, teacher, profile, provided, hidden, known=None):
+    """:func:`read_submission` from the submission's copy in ``copies``."""
+    return read_submission(submission, copies.of(submission), teacher, profile, provided,
+                           hidden, known)
 
 
 def check_with(teacher):
@@ -204,7 +203,7 @@ def check_with(teacher):
 
 def read_settings(args):
     """(grading.yaml's settings, the settings chosen, where each came from)
-    for the command line's ``args`` (see spec.settings)."""
+    for the command line's ``args`` (see spec.settings): grading.yaml read."""
     folder = os.path.abspath(args.submissions)
     teacher = read_teacher_file(os.path.join(folder, 'grading.yaml')
                                 if os.path.isdir(folder) else None)
@@ -212,23 +211,34 @@ def read_settings(args):
     return teacher, chosen, whence
 
 
-def plan(args, out, version, log):
-    """([RunSpec] for every submission and repeat in the folder's order, the
-    profile, {setting: where its value came from})."""
+def entries(args, log):
+    """The folder's submissions to grade, in its order (``--only``'s): the
+    folder discovered, its notes logged."""
     submissions, notes = discover(args.submissions)
     for note in notes:
         log(note)
-    folder = os.path.abspath(args.submissions)
-    teacher, chosen, whence = read_settings(args)
-    check_with(teacher)
-    profile = chosen['profile']
     if args.only:
         unknown = set(args.only) - {s.name for s in submissions}
         if unknown:
             raise SubmissionError('--only: no submission named %s (there are: %s)' % (
                 ', '.join(sorted(unknown)), ', '.join(s.name for s in submissions)))
         submissions = [s for s in submissions if s.name in args.only]
-    hidden = [folder if os.path.isdir(folder) else os.path.dirname(folder), out]
+    return submissions
+
+
+def plan(args, out, version, log, read, submissions, copies):
+    """([RunSpec] for every submission and repeat in the folder's order, the
+    profile, {setting: where its value came from}), from what was read once:
+    ``read`` (:func:`read_settings`'), ``submissions`` (:func:`entries`') and
+    their ``copies`` (copies.Copies)."""
+    folder = os.path.abspath(args.submissions)
+    teacher, chosen, whence = read
+    check_with(teacher)
+    profile = chosen['profile']
+    # hidden from every run's sandbox and launch reader: the folder, the report and the
+    # class's copies (a local run is on this machine, whatever its temporary directory)
+    hidden = [folder if os.path.isdir(folder) else os.path.dirname(folder), out,
+              copies.scratch]
     provided = launch_nodes.provided_packages()
     known = build_deps.available_debian()
     specs = []
@@ -239,7 +249,7 @@ def plan(args, out, version, log):
             continue
         refused = (teacher.get('errors') or {}).get(submission.name)
         try:
-            found = commands_for(submission, teacher, profile, provided, hidden, known)
+            found = commands_for(submission, copies, teacher, profile, provided, hidden, known)
         except Exception as exc:      # noqa: BLE001 -- the grader's fault, for this one only
             log('%s: the grader failed while reading it: %s' % (submission.name,
                                                                  traceback_line(exc)))
@@ -259,12 +269,3 @@ def plan(args, out, version, log):
     build_deps.install(sorted({n for spec in specs if not spec.refused for n in spec.debian}),
                        log)
     return specs, profile, whence
-
-
-def traceback_line(exc):
-    """``TypeError: ... (planning.py:42)``: the exception and where it was raised."""
-    import traceback
-    frames = traceback.extract_tb(exc.__traceback__)
-    where = ' (%s:%d)' % (os.path.basename(frames[-1].filename), frames[-1].lineno) \
-        if frames else ''
-    return '%s: %s%s' % (type(exc).__name__, str(exc)[:300], where)

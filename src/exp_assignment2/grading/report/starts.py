@@ -4,7 +4,6 @@ and when it started, from the driver's events (:mod:`~exp_assignment2.grading.ru
 import html
 
 from exp_assignment2.grading.plan.starts import describe
-from exp_assignment2.grading.report.html import e as _e
 
 SAID = ('started', 'exited', 'never_started')
 

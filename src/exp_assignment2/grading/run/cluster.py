@@ -21,6 +21,8 @@ import uuid
 import warnings
 
 from exp_assignment2.grading import record
+from exp_assignment2.grading.judge import verdicts
+from exp_assignment2.grading.run import ending
 from exp_assignment2.grading.run import tasks
 
 CONNECT_TIMEOUT = 5.0          # s to reach a scheduler, then one line
@@ -144,58 +146,53 @@ class Cluster(object):
                 self.local.close()
 
 
-def payload(run, version):
+def payload(run, version, copies):
     """What a task needs to run one Run anywhere (see tasks.run_task): its
-    specification as a plain dict, and the submission's bytes."""
-    kind, data = tasks.pack_submission(run.submission)
+    specification as a plain dict, and the submission's bytes (packed from
+    its copy in ``copies``, plan.copies.Copies)."""
+    kind, data = tasks.pack_submission(run.submission, copies)
     return {'spec': run.spec.to_dict(), 'packed_kind': kind, 'data': data,
             'label': run.label, 'version': version}
 
 
 def unpack_result(outcome, run, started):
-    """The run's directory and result on the teacher's side; its retries noted."""
-    result = outcome['result']
+    """The run's directory on the teacher's side as its worker sent it back
+    (its record as the worker wrote it), and the teacher's part added beside
+    it: the workers that ran it, a note when it was run again, what was cut."""
     tasks.unpack_run(outcome['archive'], run.dir)
     workers = started.get(run.label) or []
-    result['workers'] = workers
+    teacher = {'workers': workers}
     if len(workers) > 1:
-        result.setdefault('notes', []).append(
-            'run again: its worker %s was lost in the middle of the run; done on %s'
-            % (', '.join(workers[:-1]), workers[-1]))
-    return _rewrite(run, result)
+        teacher['notes'] = ['run again: its worker %s was lost in the middle of the run; '
+                            'done on %s' % (', '.join(workers[:-1]), workers[-1])]
+    if outcome.get('cut'):
+        teacher['cut'] = list(outcome['cut'])
+    result = record.write(run.record, teacher=teacher)
+    if result is None:
+        raise ValueError('its worker sent back no record')
+    run.result, run.state = result, 'done'
+    return result
 
 
 def lost_result(run, error, started):
     """A run Dask gave up on (its workers kept dying): the grader's fault."""
-    return refused_result(run, 'the grader lost this run: %s' % (
-        str(error).splitlines()[0][:300] if str(error) else type(error).__name__),
-        started.get(run.label) or [])
+    return not_run(run, started.get(run.label) or [], lost=(
+        str(error).splitlines()[0][:300] if str(error) else type(error).__name__))
 
 
-def refused_result(run, reason, workers=()):
-    """A run that did not run, for a reason of the grader's or the teacher's."""
+def not_run(run, workers=(), **told):
+    """The record of a run that did not run on a worker, made on the teacher's
+    side: ``told`` is why (one of judge.seen.TOLD: ``refused``, ``rejected``,
+    ``lost``, ``grader_fault``), and the verdict table decides on it."""
+    spec = run.spec
     result = record.RunRecord.new(
-        run.spec.name, run.label, run.seed, verdict='grader_error',
-        commands=run.spec.commands, commands_from=run.spec.commands_from,
-        readme_commands=run.spec.readme_commands, reason=reason, workers=list(workers),
-        truth={'sim_time': 0.0}, notes=list(run.spec.notes), duration=run.spec.duration,
-        ended_by='not_run')
-    return _rewrite(run, result)
-
-
-def rejected_result(run, reason):
-    """A submission that cannot be taken at all (it does not unpack, it holds
-    no package, it is not a folder or an archive): ``not_built``, decided on
-    the teacher's side without a worker."""
-    result = record.RunRecord.new(
-        run.spec.name, run.label, run.seed, verdict='not_built', reason=reason,
-        commands=[], commands_from='', readme_commands=[], truth={'sim_time': 0.0},
-        notes=list(run.spec.notes), duration=run.spec.duration, ended_by='not_run',
-        packages=list(run.spec.packages))
-    return _rewrite(run, result)
-
-
-def _rewrite(run, result):
-    """The record written (through its one writer) and kept as the run's result."""
+        spec.name, run.label, run.seed, commands=spec.commands,
+        commands_from=spec.commands_from, readme_commands=spec.readme_commands,
+        truth={'sim_time': 0.0}, notes=list(spec.notes), duration=spec.duration,
+        ended_by=ending.NOT_RUN, **told)
+    if told.get('rejected'):        # what it holds, as far as it could be read
+        result['packages'] = list(spec.packages)
+    result.update(verdicts.judge_told(result))
+    result['teacher'] = {'workers': list(workers)}
     run.result, run.state = record.write(run.record, result), 'done'
     return run.result

@@ -1,20 +1,31 @@
 """Why a run ends now, from what its monitor knows and a clock (no ROS, no I/O).
 
-The runner's monitor (:meth:`~exp_assignment2.grading.run.runner.Run._monitor`)
+The runner's monitor (:func:`~exp_assignment2.grading.run.monitor.watch`)
 keeps a :class:`RunFacts` up to date as the driver, the truth server and the
 logs tell it; :func:`end_reason` says, at each look, whether one of them ends
 the run, the first of these that holds (their order is the precedence):
 
-1. ``cancelled``: the grading was stopped (Ctrl-C, a lost cluster);
-2. ``build_limit``: the build ran past its wall-clock limit;
-3. ``duration``: the simulator reached the run's simulated duration;
-4. ``required_node_died``: roslaunch said ``REQUIRED process [NODE] has
+1. ``driver_exit``: the grader's driver in the sandbox ended by itself
+   (nothing is left to look at: the verdict tells why, e.g. a build that
+   failed, or processes killed from inside the sandbox);
+2. ``build_failed``: the driver said the build failed (nothing was started);
+3. ``cancelled``: the grading was stopped (Ctrl-C, a lost cluster);
+4. ``build_limit``: the build ran past its wall-clock limit;
+5. ``duration``: the simulator reached the run's simulated duration;
+6. ``required_node_died``: roslaunch said ``REQUIRED process [NODE] has
    died!`` and shuts that launch down, as it does on the student's desktop;
-5. ``wall_limit``: the run went past its wall-clock limit;
-6. ``all_exited``: every command started has exited and the ground truth
+7. ``wall_limit``: the run went past its wall-clock limit;
+8. ``all_exited``: every command started has exited and the ground truth
    has been quiet for :data:`TRUTH_QUIET` s (the student's system is gone);
-7. ``no_simulator``: no ground truth came in :attr:`RunFacts.simulator_wait`;
-8. ``disk_limit``: the run's directory went past its limit.
+9. ``no_simulator``: no ground truth came in :attr:`RunFacts.simulator_wait`;
+10. ``disk_limit``: the run's directory went past its limit.
+
+The first two end the run at once (:data:`AT_ONCE`: the driver is gone, or
+nothing was started); for the others the driver is asked to end its
+commands, and is killed with them when it has not within :data:`STOP_GRACE`
+s (:func:`stop_overdue`). A run that never started (it was not unpacked, had
+no sandbox, or was refused or lost on the teacher's side) ends by
+:data:`NOT_RUN`, which no monitor says.
 
 Any other node's death ends nothing: roslaunch goes on without it (and
 restarts it if it has ``respawn="true"``), a rosrun'd command that exits
@@ -25,6 +36,11 @@ one wall clock (``time.monotonic()`` in the runner, a number in a test).
 BUILD_LIMIT = 900.0     # wall s for a build
 TRUTH_QUIET = 10.0      # wall s of no ground truth after every command exited
 SIMULATOR_WAIT = 90.0   # wall s after the build for the first ground truth, plus the starts'
+STOP_GRACE = 40.0       # wall s the driver has to end its commands once asked
+AT_ONCE = ('driver_exit', 'build_failed')     # nothing is left to ask to stop
+NOT_RUN = 'not_run'     # the record's ended_by of a run that never started
+REASONS = AT_ONCE + ('cancelled', 'build_limit', 'duration', 'required_node_died',
+                     'wall_limit', 'all_exited', 'no_simulator', 'disk_limit')
 
 
 class RunFacts(object):
@@ -37,7 +53,9 @@ class RunFacts(object):
         # the commands start over starts_span s (starts.span: a script's sleeps and
         # terminals, a README's delay) before the simulator can be expected
         self.simulator_wait = SIMULATOR_WAIT + float(starts_span)
+        self.driver_exited = False    # the driver's process has ended
         self.built_at = None          # when the driver said the build ended
+        self.build_failed = False     # and that it failed
         self.cancelled = False
         self.truth = None             # (simulated s, wall time) of the latest ground truth
         self.all_exited = False       # every command started has exited
@@ -46,8 +64,12 @@ class RunFacts(object):
 
 
 def end_reason(facts, now):
-    """The reason the run ends at wall time ``now`` (one of the module's), or None."""
+    """The reason the run ends at wall time ``now`` (one of :data:`REASONS`), or None."""
     f = facts
+    if f.driver_exited:
+        return 'driver_exit'
+    if f.build_failed:
+        return 'build_failed'
     if f.cancelled:
         return 'cancelled'
     if f.built_at is None:
@@ -65,3 +87,9 @@ def end_reason(facts, now):
     if f.over_disk:
         return 'disk_limit'
     return None
+
+
+def stop_overdue(asked_at, now):
+    """The driver, asked to end its commands at ``asked_at``, has not by ``now``:
+    the run's processes are killed."""
+    return now - asked_at > STOP_GRACE

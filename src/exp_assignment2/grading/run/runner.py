@@ -9,31 +9,27 @@ simulator's socket is in ``sockets/``, shown to it read-only.
 import json
 import os
 import shutil
-import subprocess
 import threading
 import time
 
-from exp_assignment2.grading.plan import build_deps
-from exp_assignment2.grading.run import cpu
-from exp_assignment2.grading.judge import logs
 from exp_assignment2.grading import record
-from exp_assignment2.grading.run import ending as run_end
-from exp_assignment2.grading.plan import starts
 from exp_assignment2.grading.judge import verdicts
+from exp_assignment2.grading.plan import build_deps
 from exp_assignment2.grading.plan import packages as packages_
-from exp_assignment2.grading.paths import INSIDE, ROOT
-from exp_assignment2.grading.run.files import directory_size, log_sizes, waits_on_wall_clock
-from exp_assignment2.grading.run.sandbox import Sandbox, SandboxError
+from exp_assignment2.grading.paths import ROOT
+from exp_assignment2.grading.plan import starts
 from exp_assignment2.grading.plan.submissions import Submission, SubmissionError, package_name, \
     unpack
+from exp_assignment2.grading.run import ending
+from exp_assignment2.grading.run import monitor
+from exp_assignment2.grading.run.files import waits_on_wall_clock
+from exp_assignment2.grading.run.sandbox import Sandbox, SandboxError
 from exp_assignment2.grading.run.truth import TruthServer
 from exp_assignment2.original_env import environment as original_env
 from exp_assignment2.launch_surface.viewer import FRAME_RATE_ENV as VIEWER_FRAME_RATE_ENV
 from exp_assignment2.sim.ground_truth import SOCKET_ENV, TOPICS_ENV
 from exp_assignment2.sim.releases import ENV as RELEASE_ENV
 
-START_SLACK = 120.0          # wall s on top of the duration: set-up, starting, ending
-WORK_LIMIT = 2 * 1024 ** 3   # bytes the work directory may hold
 # the environment a run starts with (the sandbox's is cleared)
 PASSED_ENV = ('PATH', 'LANG', 'LC_ALL', 'EXP2_WS', 'EXP2_TEST_JOBS', 'EXP2_ROS_RELEASE')
 
@@ -67,7 +63,7 @@ class Run(object):
         self.sockets = os.path.join(self.dir, 'sockets')
         self.stop_event = stop_event or threading.Event()
         self.events, self.state = [], 'waiting'
-        self._news = threading.Event()      # the driver said something
+        self.news = threading.Event()       # the driver said something (monitor.watch)
         self.result = None
 
     # the run's files
@@ -135,24 +131,19 @@ class Run(object):
 
     def go(self):
         """The run, start to record; whatever goes wrong in the grader on the
-        way is this run's ``grader_error`` with its cause, never the grading's end."""
-        started = time.time()
+        way is this run's ``grader_fault``, never the grading's end."""
         spec = self.spec
-        result = {'name': self.submission.name, 'label': self.label, 'seed': self.seed,
-                  'version': self.settings.version, 'profile': self.settings.profile['name'],
-                  'started': started, 'commands': list(spec.commands),
-                  'commands_from': spec.commands_from, 'notes': list(spec.notes),
-                  'readme_commands': list(spec.readme_commands),
-                  'packages': list(spec.packages), 'release': spec.release,
-                  'release_why': spec.release_why}
+        result = record.RunRecord.new(
+            self.submission.name, self.label, self.seed, version=self.settings.version,
+            profile=self.settings.profile['name'], started=time.time(),
+            commands=list(spec.commands), commands_from=spec.commands_from,
+            notes=list(spec.notes), readme_commands=list(spec.readme_commands),
+            packages=list(spec.packages), release=spec.release, release_why=spec.release_why)
         try:
             self._fresh_dirs()
             self._go(result)
         except Exception as exc:      # noqa: BLE001 -- a fault of the grader's, this run's only
-            from exp_assignment2.grading.plan.planning import traceback_line
-            result.update(verdict='grader_error', reason='the grader failed while running it '
-                          '(a fault of the grader\'s, not the student\'s): %s'
-                          % traceback_line(exc))
+            result['grader_fault'] = record.fault('failed while running it', exc)
         return self._finish(result)
 
     def _packages(self, root):
@@ -170,9 +161,11 @@ class Run(object):
         return built[0].path, [p.path for p in built[1:]]
 
     def _go(self, result):
+        """The run's facts in ``result``: why it cannot be taken, or why its
+        sandbox could not be made, or what its monitor saw."""
         spec = self.spec
         if spec.rejected:
-            result.update(verdict='not_built', reason=spec.rejected)
+            result['rejected'] = spec.rejected
             return
         failed = build_deps.install(spec.debian, self.settings.log)
         if failed:
@@ -182,7 +175,7 @@ class Run(object):
             unpacked = unpack(self.submission, os.path.join(self.work, 'src'))
             package_dir, more = self._packages(unpacked.root)
         except SubmissionError as exc:
-            result.update(verdict='not_built', reason='the submission: %s' % exc)
+            result['rejected'] = 'the submission: %s' % exc
             return
         result['package'] = package_name(package_dir)
         rtf = self.settings.real_time_factor
@@ -201,9 +194,10 @@ class Run(object):
                 self.settings.profile['memory_limit_mb'], self.settings.profile['process_limit'])]
             truth = TruthServer(os.path.join(self.sockets, 'truth.sock'), self.record,
                                 may_write=box.may_write)
-            self._monitor(box, truth, self._plan(package_dir, more, unpacked.root), rtf, result)
+            monitor.watch(self, box, truth, self._plan(package_dir, more, unpacked.root), rtf,
+                          result)
         except SandboxError as exc:
-            result.update(verdict='grader_error', reason=str(exc))
+            result['sandbox_error'] = str(exc)
 
     def repeat_command(self):
         return 'bash tools/run grade %s --profile %s --seed %d --duration %g%s' % (
@@ -211,119 +205,16 @@ class Run(object):
             self.settings.duration, ' --real-time-factor %g' % self.settings.real_time_factor
             if self.settings.real_time_factor != 1.0 else '')
 
-    def _monitor(self, box, truth, plan, rtf, result):
-        """Start the driver in the sandbox and watch until the run is over
-        (why it ends: :func:`~exp_assignment2.grading.run.ending.end_reason`)."""
-        events_path = os.path.join(self.record, 'events.jsonl')
-        proc = box.start(['/usr/bin/python3', INSIDE, plan], stdout=subprocess.PIPE)
-        events = self.events
-        reader = threading.Thread(target=self._read_events,
-                                  args=(proc, events, events_path, self._news), daemon=True)
-        reader.start()
-        duration = self.settings.duration
-        t0 = time.monotonic()
-        span = starts.span(self.spec.starts) if self.spec.starts else \
-            len(self.spec.commands) * self.settings.profile['delay']
-        facts = run_end.RunFacts(duration, duration / (rtf if rtf > 0 else 1.0) * 1.5 +
-                                 START_SLACK, t0, span)
-        required = logs.RequiredWatch(self.work)
-        ending = None
-        self.state = 'building'
-        last_size_check = 0.0
-        while proc.poll() is None:
-            self._news.wait(0.25)       # a driver event, or the limits' next look
-            self._news.clear()
-            now = time.monotonic()
-            if facts.built_at is None:
-                built = next((e for e in events if e.get('event') == 'built'), None)
-                if built is not None:
-                    facts.built_at = now
-                    self.state = 'running'
-                    if built.get('rc') != 0:
-                        result['ended_by'] = 'build_failed'
-                        break
-            if ending:
-                if now - ending[1] > 40:        # the driver did not end its commands
-                    break
-                continue
-            facts.cancelled = self.stop_event.is_set()
-            facts.truth = truth.latest
-            facts.all_exited = self._all_exited(events)
-            if facts.built_at is not None and not facts.required_died:
-                facts.required_died = required.death()
-            if now - last_size_check > 5:
-                last_size_check = now
-                facts.over_disk = directory_size(self.work) > WORK_LIMIT
-            reason = run_end.end_reason(facts, now)
-            if reason:
-                ending = (reason, now)
-                result['ended_by'] = reason
-                result['ended_at'] = truth.latest[0] if truth.latest else 0.0   # simulated s
-                if reason == 'required_node_died':
-                    result['required_node'] = facts.required_died
-                result['cpu_s'], result['memory_mb'] = cpu.snapshot(box.groups.pids())
-                result['log_sizes'] = log_sizes(self.work)
-                self.state = 'ending'
-                try:
-                    proc.stdin.write('stop\n')
-                    proc.stdin.flush()
-                except (OSError, ValueError):
-                    pass
-        result.setdefault('ended_by', 'driver_exit')
-        result.setdefault('log_sizes', log_sizes(self.work))
-        result['all_gone'] = box.kill()
-        result['peak_memory_mb'] = (box.groups.peak_memory() or 0) / 2 ** 20
-        result['oom'] = box.groups.oom_killed()
-        if result['all_gone']:
-            box.groups.remove()
-        reader.join(2.0)
-        truth.close()
-        result['truth'] = {'states': truth.states, 'frames': truth.frames,
-                           'topics': truth.topics, 'dropped': truth.dropped,
-                           'simulator': truth.simulator and truth.simulator[1],
-                           'refused_peers': truth.refused,
-                           'sim_time': truth.latest[0] if truth.latest else 0.0}
-        result['real_time_factor'] = truth.real_time_factor()
-        result['wall_time'] = time.monotonic() - t0
-        result['sandbox_exit'] = proc.returncode
-        result['events'] = events
-        built = next((e for e in events if e.get('event') == 'built'), None)
-        if built is not None:
-            result['build'] = {'rc': built.get('rc'), 'error': built.get('error')}
-
-    @staticmethod
-    def _all_exited(events):
-        started = {e['index'] for e in events if e.get('event') == 'started'}
-        exited = {e['index'] for e in events if e.get('event') == 'exited'}
-        return bool(started) and started <= exited
-
-    @staticmethod
-    def _read_events(proc, events, path, news):
-        with open(path, 'w') as out:
-            for line in proc.stdout:
-                out.write(line)
-                if len(events) > 10000:
-                    continue
-                try:
-                    event = json.loads(line)
-                except ValueError:
-                    event = {'event': 'output', 'text': line.rstrip()[:500]}
-                if isinstance(event, dict):
-                    events.append(event)
-                    news.set()
-
     def _finish(self, result):
+        """The verdict, decided on the run's facts (verdicts.RULES), and the record written."""
         result.setdefault('duration', self.settings.duration)
-        result.setdefault('ended_by', 'not_run')      # not unpacked, or no sandbox
-        if 'verdict' not in result:
-            try:
-                result.update(verdicts.judge(self.work, self.record, result,
-                                             self.settings.profile))
-            except Exception as exc:      # noqa: BLE001 -- the grader's fault, this run's only
-                from exp_assignment2.grading.plan.planning import traceback_line
-                result.update(verdict='grader_error', reason='the grader failed while judging '
-                              'it (a fault of the grader\'s, not the student\'s): %s'
-                              % traceback_line(exc))
+        result.setdefault('ended_by', ending.NOT_RUN)     # it never started
+        profile = self.settings.profile
+        try:
+            result.update(verdicts.judge(self.work, self.record, result, profile))
+        except Exception as exc:      # noqa: BLE001 -- the grader's fault, this run's only
+            result['grader_fault'] = record.fault('failed while judging it', exc)
+            result.update(verdicts.judge_told(result))
         if result.get('verdict') == 'not_built':
             result['reason'] = build_deps.said_by_rosdep(result.get('reason') or '',
                                                          result.get('notes') or [])

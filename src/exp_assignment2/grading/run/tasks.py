@@ -1,12 +1,13 @@
 """A grading run as a task that can go to any machine (no ROS here, no Dask
 either: :mod:`exp_assignment2.grading.run.cluster` hands these to Dask).
 
-The submission travels as an archive (``pack_submission``); the worker runs
-it in a scratch directory of its own (``run_task``) and sends back the run's
+The submission travels as an archive (``pack_submission``, of the teacher's
+side's copy of it: plan.copies); the worker runs it in a scratch directory
+of its own (``run_task``) and sends back the run's
 directory as an archive (``pack_run``): its record, its logs, its build
-log and its windows' pictures, bounded in size (what was cut is said in the result). The teacher's
-side unpacks it where the report expects it (``unpack_run``). No filesystem
-is shared.
+log and its windows' pictures, bounded in size (what was cut is said beside
+it, for the record's teacher's part). The teacher's side unpacks it where
+the report expects it (``unpack_run``). No filesystem is shared.
 """
 import io
 import os
@@ -16,13 +17,15 @@ import tempfile
 import threading
 import time
 
+from exp_assignment2.grading import record
 from exp_assignment2.grading.paths import PACKAGE_XML
 from exp_assignment2.grading.run.runner import Run, RunSettings
 from exp_assignment2.grading.plan.spec import RunSpec
-from exp_assignment2.grading.plan.submissions import MAX_UNPACKED, Submission, copy_dir
+from exp_assignment2.grading.plan.submissions import Submission
 
 RETURN_LIMIT = 64 * 1024 * 1024        # bytes of a run's directory sent back
 FILE_LIMIT = 8 * 1024 * 1024           # bytes of one log sent back (its start and end)
+RECORD = os.path.join('record', record.NAME)      # sent whole, first
 KEPT = ('record', 'work/logs', 'work/ros_home/log', 'work/overlay', 'work/display')
 VERSION_ENV = 'EXP2_GRADER_VERSION'    # the version a worker announces (default: package.xml's)
 
@@ -43,29 +46,38 @@ def package_version():
         return 'unknown'
 
 
-def pack_submission(submission):
-    """(kind, bytes): an archive as it is; a directory as a .tar.gz of its
-    files, links inside it followed (SubmissionError for a link out of it:
-    no file of the teacher's machine travels with a submission)."""
+def pack_submission(submission, copies):
+    """(kind, bytes): an archive as it is; a directory as a .tar.gz of the
+    teacher's side's copy of it (``copies``, plan.copies.Copies: links inside
+    it kept, none out of it: no file of the teacher's machine travels with a
+    submission; SubmissionError when it cannot be taken)."""
     if submission.kind != 'dir':
         with open(submission.path, 'rb') as f:
             return submission.kind, f.read()
-    scratch = tempfile.mkdtemp(prefix='exp2-pack-')
-    try:
-        copy = os.path.join(scratch, os.path.basename(submission.path.rstrip('/')) or 'package')
-        copy_dir(submission.path, copy, MAX_UNPACKED)
-        buffer = io.BytesIO()
-        with tarfile.open(fileobj=buffer, mode='w:gz') as archive:
-            archive.add(copy, arcname=os.path.basename(copy))
-        return 'tar', buffer.getvalue()
-    finally:
-        shutil.rmtree(scratch, ignore_errors=True)
+    copy = copies.of(submission)
+    copy.taken()
+    buffer = io.BytesIO()
+    with tarfile.open(fileobj=buffer, mode='w:gz') as archive:
+        archive.add(copy.dest, arcname=os.path.basename(submission.path.rstrip('/')) or 'package')
+    return 'tar', buffer.getvalue()
+
+
+def _add(archive, rel, data):
+    info = tarfile.TarInfo(rel)
+    info.size = len(data)
+    archive.addfile(info, io.BytesIO(data))
+    return len(data)
 
 
 def pack_run(run_dir, limit=RETURN_LIMIT):
-    """(bytes, [what was cut]) of a run's directory: record and logs."""
+    """(bytes, [what was cut]) of a run's directory: record and logs; its
+    record (run.json) always whole, as the worker wrote it."""
     buffer, cut, total = io.BytesIO(), [], 0
+    own = os.path.join(run_dir, RECORD)
     with tarfile.open(fileobj=buffer, mode='w:gz') as archive:
+        if os.path.isfile(own) and not os.path.islink(own):
+            with open(own, 'rb') as f:
+                total += _add(archive, RECORD, f.read())
         for part in KEPT:
             base = os.path.join(run_dir, part)
             for root, dirs, files in os.walk(base):
@@ -75,9 +87,9 @@ def pack_run(run_dir, limit=RETURN_LIMIT):
                     if part == 'work/overlay' and name != 'build.log':
                         continue
                     path = os.path.join(root, name)
-                    if os.path.islink(path) or not os.path.isfile(path):
-                        continue
                     rel = os.path.relpath(path, run_dir)
+                    if os.path.islink(path) or not os.path.isfile(path) or rel == RECORD:
+                        continue
                     size = os.path.getsize(path)
                     if total + min(size, FILE_LIMIT) > limit:
                         cut.append('%s (%d bytes): over the %d MB a run sends back'
@@ -92,10 +104,7 @@ def pack_run(run_dir, limit=RETURN_LIMIT):
                     else:
                         with open(path, 'rb') as f:
                             data = f.read()
-                    info = tarfile.TarInfo(rel)
-                    info.size = len(data)
-                    archive.addfile(info, io.BytesIO(data))
-                    total += len(data)
+                    total += _add(archive, rel, data)
     return buffer.getvalue(), cut
 
 
@@ -132,7 +141,8 @@ def _watch(run, stop):
 
 
 def run_task(payload, stop=None, scratch_root=None):
-    """Run one payload (see cluster.payload) here; returns {'result', 'archive'}.
+    """Run one payload (see cluster.payload) here; returns {'archive': the run's
+    directory (pack_run), 'cut': what of it was not sent whole}.
 
     ``stop``: a function that waits a moment (a second) and says whether the
     teacher cancelled the grading; called until the run is over."""
@@ -159,14 +169,12 @@ def run_task(payload, stop=None, scratch_root=None):
             watcher = threading.Thread(target=_watch, args=(run, stop), daemon=True)
             watcher.start()
         try:
-            result = run.go()
+            run.go()
         finally:
             if watcher is not None:     # its last look ends within stop()'s second
                 run.state = 'done'
                 watcher.join(5.0)
         data, cut = pack_run(run.dir)
-        if cut:
-            result['cut'] = cut
-        return {'result': result, 'archive': data}
+        return {'archive': data, 'cut': cut}
     finally:
         shutil.rmtree(scratch, ignore_errors=True)

@@ -5,7 +5,6 @@ Made from a :class:`~exp_assignment2.grading.similarity.fingerprints.Result`; no
 Every student text is escaped: a file may hold anything.
 """
 import collections
-import html
 import json
 import os
 import re
@@ -187,36 +186,29 @@ def write(out, result, templates=()):
         f.write(page(result, templates))
     with open(os.path.join(out, 'similarity.json'), 'w') as f:
         json.dump(to_json(result, templates), f, indent=1)
-    annotate_index(out)
 
 
-def annotate_index(out):
-    """index.html with a link to similarity.html and a column of each
-    submission's highest pair, when both files are there (after the grading's
-    report.write, which writes the index afresh)."""
-    index, data = os.path.join(out, 'index.html'), os.path.join(out, 'similarity.json')
-    if not (os.path.isfile(index) and os.path.isfile(data)):
-        return
-    with open(data) as f:
-        tops = {s['name']: s for s in json.load(f)['submissions']}
-    with open(index) as f:
-        text = f.read()
-    if 'similarity.html' in text:
-        return
-    text = text.replace('</h1>', '</h1><p><a href="similarity.html">Code shared between '
-                        'submissions</a> (not a verdict)</p>', 1)
-    text = text.replace('<th onclick="sortBy(this)">submission</th>',
-                        '<th onclick="sortBy(this)">submission</th>'
-                        '<th onclick="sortBy(this)">most shared with</th>', 1)
+def tops(out):
+    """{submission: its entry of similarity.json (``top_share``, ``top_with``)}
+    of the similarity report in ``out``, or None when there is none."""
+    try:
+        with open(os.path.join(out, 'similarity.json')) as f:
+            return {s['name']: s for s in json.load(f)['submissions']}
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
 
-    def cell(match):
-        name = html.unescape(match.group(2))
-        top = tops.get(name) or {}
-        if not top.get('top_with'):
-            return match.group(0) + '<td data-key="0">—</td>'
-        return match.group(0) + '<td data-key="%.4f"><a href="similarity.html#%s">%.0f%% %s</a>' \
-            '</td>' % (top['top_share'], _slug(*sorted((name, top['top_with']))),
-                       100 * top['top_share'], _e(top['top_with']))
-    text = re.sub(r'<tr><td><a href="pages/([^"]*)\.html">([^<]*)</a></td>', cell, text)
-    with open(index, 'w') as f:
-        f.write(text)
+
+# the index's link to similarity.html and its column (report.index writes them)
+INDEX_LINK = ('<p><a href="similarity.html">Code shared between submissions</a> '
+              '(not a verdict)</p>')
+INDEX_HEADING = '<th onclick="sortBy(this)">most shared with</th>'
+
+
+def index_cell(name, found):
+    """The index's cell of ``name``'s highest pair (``found``: :func:`tops`')."""
+    top = found.get(name) or {}
+    if not top.get('top_with'):
+        return '<td data-key="0">—</td>'
+    return '<td data-key="%.4f"><a href="similarity.html#%s">%.0f%% %s</a></td>' % (
+        top['top_share'], _slug(*sorted((name, top['top_with']))), 100 * top['top_share'],
+        _e(top['top_with']))

@@ -1,18 +1,16 @@
 """The similarity step of ``grade`` (issue 42): every submission of the folder
-read from a scratch copy (archives unpacked with ``submissions.unpack``'s
-limits), fingerprinted, compared, and the report written. Runs after the
-grading's report, or alone (``--similarity-only``: no build, no run, no
-sandbox: nothing of a student's is executed, only read).
+read from the teacher's side's copy of it (plan.copies: archives unpacked
+with ``submissions.unpack``'s limits), fingerprinted, compared, and the
+report written. Runs after the grading's runs, before its report (whose
+index shows each one's highest pair), or alone (``--similarity-only``: no
+build, no run, no sandbox: nothing of a student's is executed, only read).
 """
 import os
-import shutil
-import tempfile
 
 from exp_assignment2.grading.similarity import fingerprints as similarity
 from exp_assignment2.grading.similarity import page as similarity_report
 from exp_assignment2.grading.plan.commands import TeacherFileError
-from exp_assignment2.grading.plan.submissions import Submission, SubmissionError, discover, \
-    unpack
+from exp_assignment2.grading.plan.submissions import Submission
 
 
 def templates_of(args, teacher, folder):
@@ -31,13 +29,11 @@ def templates_of(args, teacher, folder):
     return out
 
 
-def _read(name, path, kind, scratch):
-    """A similarity.Submission from a folder or archive (copied or unpacked first)."""
-    dest = os.path.join(scratch, name)
-    try:
-        root = unpack(Submission(name, path, kind), dest).root
-    except SubmissionError:     # it does not unpack: nothing of it to compare
-        root = dest
+def _read(name, submission, copies):
+    """A similarity.Submission from the copy of a folder or archive in ``copies``."""
+    copy = copies.of(submission)
+    # one that does not unpack: what came out of it
+    root = copy.unpacked.root if copy.unpacked is not None else copy.dest
     return similarity.Submission.read(name, root)
 
 
@@ -45,21 +41,18 @@ def _kind(path):
     return 'dir' if os.path.isdir(path) else ('zip' if path.endswith('.zip') else 'tar')
 
 
-def run(folder, out, templates, base_share=0.1, only=None, log=print):
-    """Compare the folder's submissions; write the report into ``out``; the Result."""
-    submissions, _ = discover(folder)
+def run(submissions, out, templates, copies, base_share=0.1, only=None, log=print):
+    """Compare the folder's ``submissions`` (discovered once, by the grading),
+    read from their ``copies`` (plan.copies.Copies); write the report into
+    ``out``; the Result."""
     skip = set(templates)
     submissions = [s for s in submissions if os.path.abspath(s.path) not in skip
                    and s.kind != 'other' and (not only or s.name in only)]
-    scratch = tempfile.mkdtemp(prefix='exp2-similar-')
-    try:
-        read = [_read(s.name, s.path, s.kind, scratch) for s in submissions]
-        template_hashes = set()
-        for number, path in enumerate(templates):
-            template_hashes |= _read('template_%d' % number, path, _kind(path),
-                                     scratch).hashes()
-    finally:
-        shutil.rmtree(scratch, ignore_errors=True)
+    read = [_read(s.name, s, copies) for s in submissions]
+    template_hashes = set()
+    for number, path in enumerate(templates):
+        name = 'template_%d' % number
+        template_hashes |= _read(name, Submission(name, path, _kind(path)), copies).hashes()
     limit = similarity.default_base_limit(len(read), base_share)
     result = similarity.compare(read, template_hashes, limit)
     similarity_report.write(out, result, templates)
