@@ -15,10 +15,9 @@ the student's launch files do), else there is none (:func:`choose`).
 """
 import json
 import math
-import os
 from collections import namedtuple
 
-from exp_assignment2.sim import ball_script
+from exp_assignment2.sim import ball_script, node_setting
 
 ENV = 'EXP2_BALL_SCRIPT'
 KEYS = ('seed', 'legs', 'model', 'duration')
@@ -93,11 +92,4 @@ def choose(parameter=None, environ=None):
     """The setting a simulator plays: its ``~ball_script`` parameter when
     given, else ``environ[ENV]``, else None. A bad one is a
     :class:`~.ball_script.ScriptError` naming where it came from."""
-    environ = os.environ if environ is None else environ
-    given, where = parameter, '~ball_script'
-    if given is None or given == '':
-        given, where = environ.get(ENV), ENV
-    try:
-        return parse(given)
-    except ball_script.ScriptError as exc:
-        raise ball_script.ScriptError('%s: %s' % (where, exc))
+    return node_setting.chosen(parameter, '~ball_script', ENV, parse, environ)

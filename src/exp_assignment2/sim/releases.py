@@ -28,8 +28,9 @@ release of each is the one simulated):
 The release is chosen by the simulator's ``~ros_release`` parameter, else the
 environment's :data:`ENV`, else :data:`DEFAULT` (:func:`choose`).
 """
-import os
 from collections import OrderedDict, namedtuple
+
+from exp_assignment2.sim import node_setting
 
 ENV = 'EXP2_ROS_RELEASE'
 DEFAULT = 'noetic'
@@ -133,11 +134,4 @@ def choose(parameter=None, environ=None):
     given, else ``environ[ENV]`` (the grader sets it in a run's sandbox),
     else :data:`DEFAULT`. :class:`ReleaseError` names a bad value and where
     it came from."""
-    environ = os.environ if environ is None else environ
-    given, where = parameter, '~ros_release'
-    if given is None or given == '':
-        given, where = environ.get(ENV), ENV
-    try:
-        return release(given)
-    except ReleaseError as exc:
-        raise ReleaseError('%s: %s' % (where, exc))
+    return node_setting.chosen(parameter, '~ros_release', ENV, release, environ)

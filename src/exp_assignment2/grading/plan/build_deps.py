@@ -18,8 +18,8 @@ import os
 import re
 import subprocess
 
-from exp_assignment2.grading.plan import packages as packages_
 from exp_assignment2.original_env.overlay import stand_ins
+from exp_assignment2.grading.plan.reading import read_text
 
 MAX_PER_SUBMISSION = 40       # Debian packages one submission may ask for
 DEBIAN_NAME = re.compile(r'^[a-z0-9][a-z0-9+.-]+$')
@@ -47,20 +47,12 @@ def keys_of(package):
     """[(key, 'ros'|'cmake')] a package asks for: package.xml's keys, its
     catkin components, its other CMake packages."""
     keys = [(k, 'ros') for k in package.depends]
-    cmake = _read(os.path.join(package.path, 'CMakeLists.txt'))
+    cmake = read_text(os.path.join(package.path, 'CMakeLists.txt'))
     keys += [(k, 'ros') for k in stand_ins.catkin_components(cmake) if (k, 'ros') not in keys]
     for name in _OTHER_FIND.findall(re.sub(r'#[^\n]*', '', cmake)):
         if name != 'catkin' and (name, 'cmake') not in keys:
             keys.append((name, 'cmake'))
     return keys
-
-
-def _read(path):
-    try:
-        with open(path, errors='replace') as f:
-            return f.read(packages_.READ_LIMIT)
-    except OSError:
-        return ''
 
 
 def candidates(key, kind):

@@ -39,6 +39,7 @@ import re
 from exp_assignment2.grading.plan import own_names
 from exp_assignment2.grading.plan.commands import ros_line, ros_parts
 from exp_assignment2.grading.plan.shell import words as shell_words
+from exp_assignment2.grading.plan.reading import read_text
 
 SIMULATOR_TYPES = {'gazebo', 'gzserver', 'gzclient', 'debug', 'stageros'}
 INIT_PY = re.compile(r'init_node\(\s*[\'"]([^\'"]+)[\'"]([^)]*)\)')
@@ -102,14 +103,6 @@ def own_has(ctx, words):
                                for folder in ctx.packages.values())
 
 
-def _read(path):
-    try:
-        with open(path, errors='replace') as f:
-            return f.read(1 << 20)
-    except OSError:
-        return ''
-
-
 def _simulator(parts):
     """Is it a simulator that a profile's world replaces?"""
     if parts['package'] == 'stage_ros':
@@ -127,13 +120,13 @@ def rosrun_node(parts, ctx):
     folder = ctx.packages.get(parts['package'])
     if name is None and folder:
         for path in own_names.files(folder).get(parts['name'], []):
-            match = INIT_PY.search(_read(path))
+            match = INIT_PY.search(read_text(path))
             if match and 'anonymous' not in match.group(2):
                 name = match.group(1)
                 break
         for source in (own_names.cpp_nodes(folder).get(parts['name'], [])
                        if name is None else []):        # a C++ node: its sources
-            match = INIT_CPP.search(_read(os.path.join(folder, source)))
+            match = INIT_CPP.search(read_text(os.path.join(folder, source)))
             if match:
                 name = match.group(1)
                 break

@@ -17,6 +17,7 @@ import re
 from exp_assignment2.grading.plan import own_names
 from exp_assignment2.grading.plan import shell
 from exp_assignment2.grading.plan import start_script
+from exp_assignment2.grading.plan.reading import read_text
 # grading.yaml's reader, where the grader has always found it
 from exp_assignment2.grading.plan.teacher_file import (  # noqa: F401 (the door to them)
     TeacherFileError, read_teacher_file)
@@ -166,8 +167,8 @@ def _readmes(root, package_dir):
         for name in README_NAMES:
             path = os.path.join(folder, name)
             if os.path.isfile(path):
-                text = _text(path)
-                if all(text != _text(p) for _, p in found):
+                text = read_text(path)
+                if all(text != read_text(p) for _, p in found):
                     found.append((os.path.relpath(path, root), path))
                 break
     return found
@@ -175,12 +176,7 @@ def _readmes(root, package_dir):
 
 def readme_text(root, package_dir=None):
     """The text of the README(s) :func:`readme_entries` reads, one after the other."""
-    return '\n'.join(_text(path) for _, path in _readmes(root, package_dir or root))
-
-
-def _text(path):
-    with open(path, errors='replace') as f:
-        return f.read(1 << 20)
+    return '\n'.join(read_text(path) for _, path in _readmes(root, package_dir or root))
 
 
 def _script(root, cwd, command):
@@ -236,7 +232,7 @@ def readme_entries(root, package_dir=None, packages=None):
     for name, path in _readmes(root, package_dir):
         names.append(name)
         cwd = _folder(root, os.path.dirname(path))
-        for code in _code_texts(_text(path)):
+        for code in _code_texts(read_text(path)):
             for piece in _pieces(code):
                 if piece[0] == 'cd':
                     cwd = cd(piece[1], cwd, piece[2])
@@ -248,7 +244,7 @@ def readme_entries(root, package_dir=None, packages=None):
                 entries[index]['script'] = script
                 if script:
                     _add_script(entries, index, add, start_script.read(
-                        _text(os.path.join(root, script)), runs_in, cd))
+                        read_text(os.path.join(root, script)), runs_in, cd))
     return entries, ' and '.join(names) or None
 
 

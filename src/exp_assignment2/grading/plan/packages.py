@@ -19,11 +19,11 @@ import shlex
 import xml.etree.ElementTree as ElementTree
 
 from exp_assignment2.grading.plan.unpacking import SKIPPED
+from exp_assignment2.grading.plan.reading import READ_LIMIT, read_text
 
 IGNORE_MARKERS = ('CATKIN_IGNORE', 'COLCON_IGNORE', 'AMENT_IGNORE')
 DEPEND_TAGS = ('depend', 'build_depend', 'build_export_depend', 'buildtool_depend',
                'exec_depend', 'run_depend', 'test_depend', 'doc_depend')
-READ_LIMIT = 1 << 20          # bytes of one file read for references
 CODE_SUFFIXES = ('.py', '.cpp', '.cc', '.h', '.hpp', '.launch', '.xml', '.xacro', '.urdf',
                  '.txt', '.yaml', '.world', '.sdf')
 NAME = re.compile(r'^[A-Za-z][A-Za-z0-9_]*$')
@@ -80,14 +80,6 @@ def find(root):
     return sorted(found, key=lambda p: (p.rel.count(os.sep), p.rel))
 
 
-def _read(path):
-    try:
-        with open(path, errors='replace') as f:
-            return f.read(READ_LIMIT)
-    except OSError:
-        return ''
-
-
 def references(package, names):
     """The names of ``names`` (other packages of the submission) that this
     package uses: its package.xml, its launch files' ``$(find X)`` and
@@ -101,7 +93,7 @@ def references(package, names):
         dirnames[:] = [d for d in dirnames if d not in SKIPPED and not d.startswith('.')]
         for name in filenames:
             if name.endswith(CODE_SUFFIXES) or name == 'CMakeLists.txt' or '.' not in name:
-                used.update(wanted.findall(_read(os.path.join(dirpath, name))))
+                used.update(wanted.findall(read_text(os.path.join(dirpath, name))))
     used.discard(package.name)
     return used
 

@@ -117,14 +117,6 @@ def resolve(package_dir, package, name, teacher, profile, provided, read_launche
             'readme_commands': listed, 'notes': notes}
 
 
-def _text(path):
-    try:
-        with open(path, errors='replace') as f:
-            return f.read(1 << 20)
-    except OSError:
-        return ''
-
-
 def _readme_packages(package_dir, names):
     """The submission's packages the README's commands name, in order."""
     named = []

@@ -22,6 +22,7 @@ import os
 import re
 
 from exp_assignment2.sim import releases as sim_releases
+from exp_assignment2.grading.plan.reading import read_text
 
 NAMES = tuple(sim_releases.RELEASES)
 # a release's name, or what only that release had: its Gazebo, its Ubuntu
@@ -41,7 +42,6 @@ PLUGIN = re.compile(r'<plugin\b[^>]*filename\s*=\s*["\']libgazebo_ros_diff_drive
 TAG = '<%s>\\s*([^<]*?)\\s*</%s>'
 USES_FRAMES = re.compile(r'lookupTransform|lookup_transform|TransformListener|tf2_ros\.Buffer'
                          r'|waitForTransform|\.frame_id\b|child_frame_id')
-READ_LIMIT = 1 << 20
 
 
 def _files(root, keep, depth=6):
@@ -54,26 +54,18 @@ def _files(root, keep, depth=6):
                 yield os.path.join(dirpath, name)
 
 
-def _read(path):
-    try:
-        with open(path, errors='replace') as f:
-            return f.read(READ_LIMIT)
-    except OSError:
-        return ''
-
-
 def said(root, notes=()):
     """(release, why) the submission names, or (None, None): a Dockerfile's
     image first, then its READMEs' words (the most named; a tie, the first),
     then catkin's link into /opt/ros (its note, the link being left out)."""
     for path in _files(root, lambda n: n == 'Dockerfile' or n.startswith('Dockerfile.')):
-        match = DOCKER_FROM.search(_read(path))
+        match = DOCKER_FROM.search(read_text(path))
         if match and match.group(1).lower() in NAMES:
             return match.group(1).lower(), 'its %s says FROM %s' % (
                 os.path.relpath(path, root), match.group(0).split(None, 1)[1].strip())
     counts, first = collections.Counter(), {}
     for path in _files(root, README.match, depth=3):
-        text = _read(path)
+        text = read_text(path)
         for sign, name in SIGNS:
             for match in sign.finditer(text):
                 counts[name] += 1
@@ -98,7 +90,7 @@ def features(root, fallback_robot=None):
     stand for a submission that brings no diff drive of its own."""
     legacy, encoder = [], False
     for path in _files(root, lambda n: n.endswith(ROBOT_FILES)):
-        for block in PLUGIN.findall(_read(path)):
+        for block in PLUGIN.findall(read_text(path)):
             tag = re.search(TAG % ('legacyMode', 'legacyMode'), block)
             legacy.append(tag.group(1) if tag else None)
             source = re.search(TAG % ('odometrySource', 'odometrySource'), block)
@@ -109,7 +101,7 @@ def features(root, fallback_robot=None):
 
 
 def _reads_frames(root):
-    return any(USES_FRAMES.search(_read(p)) for p in _files(
+    return any(USES_FRAMES.search(read_text(p)) for p in _files(
         root, lambda n: n.endswith(('.py', '.cpp', '.cc', '.h', '.hpp')) or '.' not in n))
 
 
