@@ -20,6 +20,8 @@ import tempfile
 
 from exp_assignment2.grading.plan import assignment
 from exp_assignment2.grading.plan import build_deps
+from exp_assignment2.grading.plan import deadlines
+from exp_assignment2.grading.plan import git_entries
 from exp_assignment2.grading.plan import launch_nodes
 from exp_assignment2.grading.plan import profiles
 from exp_assignment2.grading.plan import ros_release
@@ -228,6 +230,8 @@ def plan(args, out, version, log):
             raise SubmissionError('--only: no submission named %s (there are: %s)' % (
                 ', '.join(sorted(unknown)), ', '.join(s.name for s in submissions)))
         submissions = [s for s in submissions if s.name in args.only]
+    for line in deadlines.unknown_names(teacher, {s.name for s in submissions}):
+        log(line)
     hidden = [folder if os.path.isdir(folder) else os.path.dirname(folder), out]
     provided = launch_nodes.provided_packages()
     known = build_deps.available_debian()
@@ -238,6 +242,10 @@ def plan(args, out, version, log):
             log('%s: skipped (grading.yaml)' % submission.name)
             continue
         refused = (teacher.get('errors') or {}).get(submission.name)
+        git = None      # a git repository: the commit it is graded at (git_entries.py)
+        if submission.kind == 'git' and not refused:
+            git = git_entries.choose(submission, teacher, getattr(args, 'deadline', None))
+            log('%s: %s' % (submission.name, git_entries.summary(git)))
         try:
             found = commands_for(submission, teacher, profile, provided, hidden, known)
         except Exception as exc:      # noqa: BLE001 -- the grader's fault, for this one only
@@ -253,7 +261,7 @@ def plan(args, out, version, log):
                                                                              r + 1),
                 seed=args.seed + r, profile=mine, duration=chosen['duration'],
                 real_time_factor=chosen['real_time_factor'], hidden=hidden, version=version,
-                refused=refused, **found))
+                refused=refused, git=git, **found))
     # what the class needs from Debian, installed once, before any run (a run's
     # sandbox never installs; a worker installs what it lacks before its run)
     build_deps.install(sorted({n for spec in specs if not spec.refused for n in spec.debian}),

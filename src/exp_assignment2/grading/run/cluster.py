@@ -197,5 +197,7 @@ def rejected_result(run, reason):
 
 def _rewrite(run, result):
     """The record written (through its one writer) and kept as the run's result."""
+    if run.spec.git:        # the commit a git repository was graded at (git_entries.py)
+        result['git'] = run.spec.git
     run.result, run.state = record.write(run.record, result), 'done'
     return run.result

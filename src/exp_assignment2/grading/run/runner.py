@@ -59,7 +59,8 @@ class Run(object):
     def __init__(self, settings, spec, submission=None, stop_event=None):
         self.settings, self.spec = settings, spec
         # where the submission is here (a worker's copy), or where the spec says
-        self.submission = submission or Submission(spec.name, spec.path, spec.kind)
+        self.submission = submission or Submission(spec.name, spec.path, spec.kind,
+                                                   commit=(spec.git or {}).get('commit'))
         self.seed, self.label = spec.seed, spec.label
         self.dir = os.path.join(settings.runs_dir, self.label)
         self.work = os.path.join(self.dir, 'work')

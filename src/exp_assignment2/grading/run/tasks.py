@@ -19,7 +19,8 @@ import time
 from exp_assignment2.grading.paths import PACKAGE_XML
 from exp_assignment2.grading.run.runner import Run, RunSettings
 from exp_assignment2.grading.plan.spec import RunSpec
-from exp_assignment2.grading.plan.submissions import MAX_UNPACKED, Submission, copy_dir
+from exp_assignment2.grading.plan.submissions import MAX_UNPACKED, Submission, copy_dir, \
+    unpack
 
 RETURN_LIMIT = 64 * 1024 * 1024        # bytes of a run's directory sent back
 FILE_LIMIT = 8 * 1024 * 1024           # bytes of one log sent back (its start and end)
@@ -46,14 +47,18 @@ def package_version():
 def pack_submission(submission):
     """(kind, bytes): an archive as it is; a directory as a .tar.gz of its
     files, links inside it followed (SubmissionError for a link out of it:
-    no file of the teacher's machine travels with a submission)."""
-    if submission.kind != 'dir':
+    no file of the teacher's machine travels with a submission); a git
+    repository as a .tar.gz of its chosen commit's tree."""
+    if submission.kind not in ('dir', 'git'):
         with open(submission.path, 'rb') as f:
             return submission.kind, f.read()
     scratch = tempfile.mkdtemp(prefix='exp2-pack-')
     try:
         copy = os.path.join(scratch, os.path.basename(submission.path.rstrip('/')) or 'package')
-        copy_dir(submission.path, copy, MAX_UNPACKED)
+        if submission.kind == 'git':
+            unpack(submission, copy, MAX_UNPACKED)
+        else:
+            copy_dir(submission.path, copy, MAX_UNPACKED)
         buffer = io.BytesIO()
         with tarfile.open(fileobj=buffer, mode='w:gz') as archive:
             archive.add(copy, arcname=os.path.basename(copy))
