@@ -5,6 +5,7 @@ every submission of a folder built, run in its sandbox and judged; one report.
           [--profile dog|miro|FILE] [--real-time-factor F] [--seed N]
           [--only NAME ...] [--scheduler tcp://HOST:PORT] [--report-only]
           [--template DIR ...] [--base-share F] [--similarity-only]
+          [--deadline TIME] [--reference DIR ...]
 """
 import argparse
 import multiprocessing
@@ -14,6 +15,7 @@ import sys
 
 from exp_assignment2.grading.plan import planning
 from exp_assignment2.grading.plan import profiles
+from exp_assignment2.grading.report import gradebook
 from exp_assignment2.grading.report import index as report
 from exp_assignment2.grading.run import tasks
 from exp_assignment2.grading.run.cluster import Cluster, ClusterError, lost_result, payload, \
@@ -57,8 +59,18 @@ def parse_args(argv):
                         ' instead of this machine alone')
     parser.add_argument('--report-only', action='store_true',
                         help='make the report again from the runs already in --out')
+    parser.add_argument('--deadline', metavar='TIME',
+                        help='a git repository is graded at its last commit before TIME (ISO '
+                        '8601: 2025-03-01T23:59, local time unless +01:00 or Z; default: '
+                        'grading.yaml\'s deadline, else its checked-out commit)')
     add_similarity_args(parser)
     args = parser.parse_args(argv)
+    if args.deadline is not None:
+        from exp_assignment2.grading.plan import deadlines
+        try:
+            args.deadline = deadlines.parse_time(args.deadline, '--deadline')
+        except TeacherFileError as exc:
+            parser.error(str(exc))
     if not 0 < args.base_share <= 1:
         parser.error('--base-share: %r is not a share in (0, 1]' % args.base_share)
     for name in ('jobs', 'repeat'):
@@ -191,9 +203,10 @@ def main(argv=None):
         # the profile by the one precedence: --profile, grading.yaml's, dog
         if args.similarity_only:
             return similarity_step(args, out, log)
-        profile = planning.read_settings(args)[1]['profile']
+        teacher, chosen, _ = planning.read_settings(args)
+        profile = chosen['profile']
         if args.report_only:
-            summaries = report.write(out, profile)
+            summaries = report.write(out, profile, teacher=teacher)
             log(summary_line(summaries, out))
             return EXIT_OK
         folder = os.path.abspath(args.submissions)
@@ -225,15 +238,17 @@ def main(argv=None):
         grade(runs, cluster, progress)
     except KeyboardInterrupt:
         log('stopped: the report holds the runs that ended')
-        report.write(out, profile)
+        report.write(out, profile, teacher=teacher)
         return 130
     finally:
         signal.signal(signal.SIGTERM, previous)
         progress.close()
         cluster.close()
-    summaries = report.write(out, profile)
+    summaries = report.write(out, profile, teacher=teacher)
     if len(summaries) > 1:      # before the last lines, which name the pages
         similarity_step(args, out, log)
+    if gradebook.missing_line(summaries, teacher):
+        log(gradebook.missing_line(summaries, teacher))
     log(summary_line(summaries, out))
     log(feedback_line(summaries, out))
     ungraded = sorted(n for n, s in summaries.items() if s['verdict'] == 'grader_error')

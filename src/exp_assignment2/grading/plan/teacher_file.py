@@ -23,7 +23,8 @@ TOP_KEYS = {'profile': str, 'duration': (int, float), 'commands': list, 'delay':
 ONE_KEYS = {'commands': list, 'skip': bool, 'roles': dict, 'release': str,
             # a git repository graded at a commit chosen on purpose (deadlines.py)
             'commit': (str, int, float), 'at': (str, datetime.date)}
-GRADEBOOK_KEYS = {'assignment': str}     # the gradebooks' column (report/gradebook.py)
+# the gradebooks' grade column, and Canvas's column of the identifier (report/gradebook.py)
+GRADEBOOK_KEYS = {'assignment': str, 'canvas_column': str}
 ROLE_KEYS = ('robot', 'head', 'ball')     # a submission's roles named by the teacher (roles.py)
 RELEASE_NAMES = tuple(RELEASES)      # the releases the simulator can play
 # a command of grading.yaml written as a mapping: its line, when, from where
@@ -147,3 +148,7 @@ def _check_term(data, name):
             raise TeacherFileError('%s: students: %s: %r is not an identifier (a string or '
                                    'a number)' % (name, who, ident))
     _check_keys(data.get('gradebook') or {}, GRADEBOOK_KEYS, '%s: gradebook' % name)
+    column = (data.get('gradebook') or {}).get('canvas_column')
+    if column is not None and column not in ('ID', 'SIS User ID', 'SIS Login ID'):
+        raise TeacherFileError("%s: gradebook: canvas_column: %r is not one of 'ID', "
+                               "'SIS User ID', 'SIS Login ID'" % (name, column))

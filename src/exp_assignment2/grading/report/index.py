@@ -15,10 +15,12 @@ import shutil
 import statistics
 
 from exp_assignment2.grading.report import feedback
+from exp_assignment2.grading.report import gradebook
 from exp_assignment2.grading.report import figures
 from exp_assignment2.grading.report import gradescope
 from exp_assignment2.grading.judge import metrics
 from exp_assignment2.grading import record
+from exp_assignment2.grading.report import commits as report_commits
 from exp_assignment2.grading.report import failures as report_failures
 from exp_assignment2.grading.report import judged as report_judged
 from exp_assignment2.grading.report import marks as report_marks
@@ -143,6 +145,7 @@ def _page(summary, runs, runs_dir, pictures, profile):
                      % _e(', '.join(summary['verdicts'])))
     parts.append('<h2>Started with</h2><p>from %s</p>%s' % (
         _e(main.get('commands_from')), report_starts.table(main)))
+    parts += report_commits.section(summary)
     for note in main.get('notes') or []:
         parts.append('<p>note: %s</p>' % _e(note))
     parts += report_packages.packages_section(main)
@@ -251,12 +254,14 @@ def _index(summaries, pictures, profile, title):
     return ''.join(parts)
 
 
-def write(report_dir, profile, title=None):
-    """Make the report from ``report_dir/runs``; returns the summaries."""
+def write(report_dir, profile, title=None, teacher=None):
+    """Make the report from ``report_dir/runs``; returns the summaries.
+    ``teacher``: grading.yaml's settings (the gradebooks' identifiers)."""
     runs_dir = os.path.join(report_dir, 'runs')
     every = load_runs(runs_dir)
     runs, tried = report_releases.counted(every, profile)   # in several releases: the better
     summaries = report_marks.add_scores(summarise(runs), runs, profile)
+    report_commits.apply_late(summaries, runs)      # a late commit graded on purpose
     for name, summary in summaries.items():
         summary['releases'] = tried.get(name) or []
     pages = os.path.join(report_dir, 'pages')
@@ -279,6 +284,7 @@ def write(report_dir, profile, title=None):
         json.dump({'profile': profile, 'submissions': list(summaries.values()), 'runs': every},
                   f, indent=1, default=str)
     report_marks.write_csv(os.path.join(report_dir, 'grades.csv'), summaries, profile)
+    gradebook.write(report_dir, summaries, teacher, profile)     # Moodle's and Canvas's
     # the index's column of each one's highest pair, when a similarity report is there
     from exp_assignment2.grading.similarity.page import annotate_index
     annotate_index(report_dir)
