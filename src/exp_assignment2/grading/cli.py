@@ -269,6 +269,9 @@ def add_similarity_args(parser):
                         'base code, never counted (default 0.1)')
     parser.add_argument('--similarity-only', action='store_true',
                         help='only the similarity report: nothing built or run')
+    parser.add_argument('--reference', action='append', metavar='DIR',
+                        help='a folder of earlier years\' submissions the class is compared '
+                        'with (repeatable; never compared among themselves)')
 
 
 def similarity_step(args, out, log):
@@ -279,9 +282,14 @@ def similarity_step(args, out, log):
         if out == folder or out.startswith(folder + os.sep):
             raise SubmissionError('--out %s is inside the submissions folder, which is only '
                                   'ever read: choose another' % out)
-        teacher = planning.read_settings(args)[0]
+        teacher, chosen, _ = planning.read_settings(args)
         templates = similarity_run.templates_of(args, teacher, folder)
-        similarity_run.run(folder, out, templates, args.base_share, args.only, log)
+        runs_dir = os.path.join(out, 'runs')
+        similarity_run.run(folder, out, templates, args.base_share, args.only, log,
+                           references=similarity_run.references_of(args), settings={
+                               'teacher': teacher, 'profile': chosen['profile'],
+                               'deadline': args.deadline,
+                               'runs_dir': runs_dir if os.path.isdir(runs_dir) else None})
     except ImportError as exc:      # copydetect: tools/run grade installs it
         log('similarity: not made: %s' % exc)
         return EXIT_USAGE

@@ -1,18 +1,23 @@
 """The similarity step of ``grade`` (issue 42): every submission of the folder
 read from a scratch copy (archives unpacked with ``submissions.unpack``'s
-limits), fingerprinted, compared, and the report written. Runs after the
-grading's report, or alone (``--similarity-only``: no build, no run, no
-sandbox: nothing of a student's is executed, only read).
+limits, a git repository at the commit graded), its graded packages
+fingerprinted (:mod:`~exp_assignment2.grading.similarity.graded`), compared
+with each other and with earlier years' (``--reference``), and the report
+written. Runs after the grading's report, or alone (``--similarity-only``: no
+build, no run, no sandbox: nothing of a student's is executed, only read).
 """
 import os
 import shutil
 import tempfile
 
-from exp_assignment2.grading.similarity import fingerprints as similarity
-from exp_assignment2.grading.similarity import page as similarity_report
+from exp_assignment2.grading.plan import git_entries
 from exp_assignment2.grading.plan.commands import TeacherFileError
 from exp_assignment2.grading.plan.submissions import Submission, SubmissionError, discover, \
     unpack
+from exp_assignment2.grading.similarity import fingerprints as similarity
+from exp_assignment2.grading.similarity import graded
+from exp_assignment2.grading.similarity import page as similarity_report
+from exp_assignment2.grading.similarity import pairs
 
 
 def templates_of(args, teacher, folder):
@@ -31,42 +36,89 @@ def templates_of(args, teacher, folder):
     return out
 
 
-def _read(name, path, kind, scratch):
-    """A similarity.Submission from a folder or archive (copied or unpacked first)."""
-    dest = os.path.join(scratch, name)
-    try:
-        root = unpack(Submission(name, path, kind), dest).root
-    except SubmissionError:     # it does not unpack: nothing of it to compare
-        root = dest
-    return similarity.Submission.read(name, root)
+def references_of(args):
+    """The reference folders (``--reference``, repeatable): earlier years' submissions."""
+    out = [os.path.abspath(p) for p in getattr(args, 'reference', None) or []]
+    for path in out:
+        if not os.path.isdir(path):
+            raise TeacherFileError('--reference %s: no such folder of submissions' % path)
+    return out
+
+
+class Reader(object):
+    """Reads submissions into fingerprints from a scratch directory.
+    ``settings``: {'teacher', 'profile', 'deadline', 'runs_dir'}, or None:
+    every code file counts, git repositories at their checked-out commit."""
+
+    def __init__(self, scratch, settings=None):
+        self.scratch, self.settings = scratch, settings or {}
+        self.built = graded.from_records(self.settings['runs_dir']) \
+            if self.settings.get('runs_dir') else {}
+        self.planner = graded.Planner(self.settings.get('teacher'), self.settings['profile']) \
+            if self.settings.get('profile') else None
+
+    def read(self, submission, name=None, reference=False, whole=False):
+        """A similarity.Submission of ``submission`` (as ``name``): an earlier
+        year's (``reference``), or every code file of it (``whole``: a template)."""
+        name = name or submission.name
+        dest = os.path.join(self.scratch, 'entry_%d' % len(os.listdir(self.scratch)))
+        ours = not (reference or whole)
+        if submission.kind == 'git':        # the commit graded (another's: its checked-out one)
+            git_entries.choose(submission, (self.settings.get('teacher') or {}) if ours else {},
+                               self.settings.get('deadline') if ours else None)
+        try:
+            root = unpack(submission, dest).root
+        except SubmissionError:     # it does not unpack: nothing of it to compare
+            return similarity.Submission(name, {}, reference=reference)
+        folders = None
+        if ours and submission.name in self.built:
+            folders = self.built[submission.name]
+        elif self.planner is not None and not whole:
+            folders = self.planner.folders(submission.name, root)
+        return similarity.Submission.read(name, root, folders, reference)
 
 
 def _kind(path):
     return 'dir' if os.path.isdir(path) else ('zip' if path.endswith('.zip') else 'tar')
 
 
-def run(folder, out, templates, base_share=0.1, only=None, log=print):
-    """Compare the folder's submissions; write the report into ``out``; the Result."""
+def _entries(folder, skip=(), only=None):
     submissions, _ = discover(folder)
-    skip = set(templates)
-    submissions = [s for s in submissions if os.path.abspath(s.path) not in skip
-                   and s.kind != 'other' and (not only or s.name in only)]
+    return [s for s in submissions if os.path.abspath(s.path) not in skip
+            and s.kind != 'other' and (not only or s.name in only)]
+
+
+def run(folder, out, templates, base_share=0.1, only=None, log=print, references=(),
+        settings=None):
+    """Compare the folder's submissions (and each with the ``references``
+    folders' submissions); write the report into ``out``; the Result."""
+    submissions = _entries(folder, set(templates), only)
     scratch = tempfile.mkdtemp(prefix='exp2-similar-')
     try:
-        read = [_read(s.name, s.path, s.kind, scratch) for s in submissions]
+        reader = Reader(scratch, settings)
+        read = [reader.read(s) for s in submissions]
+        olds, names = [], set()
+        for where in references:
+            label = os.path.basename(where.rstrip('/')) or 'reference'
+            while label in names:
+                label += '_'
+            names.add(label)
+            olds += [reader.read(s, '%s/%s' % (label, s.name), True) for s in _entries(where)]
         template_hashes = set()
         for number, path in enumerate(templates):
-            template_hashes |= _read('template_%d' % number, path, _kind(path),
-                                     scratch).hashes()
+            template_hashes |= reader.read(Submission('template_%d' % number, path,
+                                                      _kind(path)), whole=True).hashes()
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
     limit = similarity.default_base_limit(len(read), base_share)
-    result = similarity.compare(read, template_hashes, limit)
-    similarity_report.write(out, result, templates)
+    result = pairs.compare(read, template_hashes, limit, olds)
+    similarity_report.write(out, result, templates, references)
     top = result.pairs[0] if result.pairs else None
-    log('similarity: %d submissions, %d pairs share code beyond %d template and %d base '
+    log('similarity: %d submissions%s, %d pairs share code beyond %d template and %d base '
         'fingerprints%s; %s (not a verdict)' % (
-            len(read), len(result.pairs), len(template_hashes), len(result.base),
-            '; most: %s and %s, %.0f%%' % (top[2], top[3], 100 * top[0]) if top else '',
-            os.path.join(out, 'similarity.html')))
+            len(read), ' and %d references' % len(olds) if olds else '', len(result.pairs),
+            len(template_hashes), len(result.base),
+            '; most: %s and %s, %.0f%%%s' % (top.a, top.b, 100 * top.share,
+                                            ' (identical)' if top.identical else '')
+            if top else '', os.path.join(out, 'similarity.html')))
     return result
