@@ -265,3 +265,13 @@ def test_an_object_that_is_not_what_its_name_says_is_refused(repo, tmp_path):
         f.write(forged)
     with pytest.raises(GitError, match='does not hold what its name says'):
         Repository(path).read(blob)
+
+
+def test_a_sha256_repository_is_one_line(tmp_path):
+    path = str(tmp_path / 'repo')
+    os.makedirs(path)
+    git(path, 'init', '-q', '--object-format=sha256')
+    commit(path, 'first', DATES[0], {'package.xml': '<package/>'})
+    submission = Submission('x', path, 'git')
+    facts = git_entries.choose(submission, {}, None)
+    assert facts['commit'] is None and 'SHA-256' in submission.why
