@@ -12,7 +12,9 @@ keys, those of a run that did not run left out:
 * what was asked: ``commands``, ``commands_from``, ``notes``, ``packages`` (every
   package of the submission: ``name``, ``rel``, ``built``, ``why``), ``duration``
   (the run's own simulated s), ``real_time_factor_asked``,
-  ``repeat_command``, ``limits``;
+  ``repeat_command``, ``limits``, ``git`` (a git repository's commit graded, how it was
+  chosen, the commits after it, days late and points off:
+  :func:`exp_assignment2.grading.plan.git_entries.choose`);
 * how it went: ``started``, ``finished``, ``events`` (the driver's), ``build``
   (the build's outcome as the driver sent it: ``rc`` and ``error`` with
   ``file``, ``line``, ``message``), ``ended_by`` (why the run was ended:
