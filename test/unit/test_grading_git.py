@@ -275,3 +275,22 @@ def test_a_sha256_repository_is_one_line(tmp_path):
     submission = Submission('x', path, 'git')
     facts = git_entries.choose(submission, {}, None)
     assert facts['commit'] is None and 'SHA-256' in submission.why
+
+
+def test_a_damaged_pack_is_one_line_not_a_crash(repo, tmp_path):
+    path, hashes = repo
+    git(path, 'repack', '-adf')
+    git(path, 'prune-packed')
+    folder = os.path.join(path, '.git', 'objects', 'pack')
+    pack = os.path.join(folder, next(n for n in os.listdir(folder) if n.endswith('.pack')))
+    os.chmod(pack, 0o644)
+    with open(pack, 'r+b') as f:
+        f.truncate(os.path.getsize(pack) // 2)
+    submission = Submission('rossi', path, 'git')
+    git_entries.choose(submission, {}, None)     # the commits come first in a pack
+    with pytest.raises(SubmissionError, match='^the git repository: '):
+        unpack(submission, str(tmp_path / 'out'))
+    with open(pack, 'wb') as f:         # an empty one
+        pass
+    facts = git_entries.choose(Submission('rossi', path, 'git'), {}, None)
+    assert 'is not a packfile' in facts['why']

@@ -30,6 +30,7 @@ from exp_assignment2.grading.plan.unpacking import MAX_MEMBERS, MAX_UNPACKED, SK
     SubmissionError, _Budget, _make_links
 
 MAX_HISTORY = 100000        # commits walked for the count of those not graded
+MAX_DEPTH = 64              # folders in folders of a commit's tree (deeper: left out)
 TREE, LINK, MODULE = 0o040000, 0o120000, 0o160000
 
 
@@ -124,7 +125,7 @@ def choose(submission, teacher, cli_deadline=None):
         facts.update(commit=chosen.sha, short=chosen.sha[:7], date=_dated(chosen),
                      subject=chosen.subject, how=how, after=len(later),
                      uncommitted=_changed(submission.path, repo, repo.commit(head).tree))
-    except (GitError, OSError) as exc:
+    except (GitError, OSError, ValueError) as exc:     # a damaged repository: the student's
         submission.why = 'the git repository: %s' % (getattr(exc, 'strerror', None) or exc)
         return dict(facts, commit=None, how='not read', why=submission.why)
     submission.commit = chosen.sha
@@ -183,6 +184,8 @@ def _write_tree(repo, tree, dest, rel, budget, links, out, count):
             out.leave_out(here, 'a name git itself refuses to check out')
         elif name in SKIPPED:
             continue
+        elif mode == TREE and here.count(os.sep) >= MAX_DEPTH:
+            out.leave_out(here, 'more than %d folders deep' % MAX_DEPTH)
         elif mode == TREE:
             os.makedirs(path, exist_ok=True)
             _write_tree(repo, sha, dest, here, budget, links, out, count)
@@ -211,7 +214,7 @@ def _changed(path, repo, tree, rel=''):
         return 0
     for mode, name, sha in entries:
         full = os.path.join(path, rel, name)
-        if mode == TREE and name not in SKIPPED:
+        if mode == TREE and name not in SKIPPED and rel.count(os.sep) < MAX_DEPTH:
             changed += _changed(path, repo, sha, os.path.join(rel, name))
         elif stat.S_ISREG(mode):
             try:

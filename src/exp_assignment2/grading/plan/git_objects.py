@@ -55,11 +55,16 @@ class Repository(object):
         self.cache, self._cached, self._packs = {}, 0, None
         self.shallow = set((self.read_text('shallow') or '').split())
 
-    def read_file(self, path, limit=MAX_OBJECT):
-        """A file's bytes, if it is a file inside ``.git`` (not through a link out)."""
+    def inside(self, path):
+        """The real path of a file of ``.git`` (GitError: not a file, or a link out of it)."""
         real = os.path.realpath(path)
         if not _within(self.root, real) or not os.path.isfile(real):
             raise GitError('%s is not a file of the repository' % os.path.relpath(path, self.root))
+        return real
+
+    def read_file(self, path, limit=MAX_OBJECT):
+        """A file's bytes, if it is a file inside ``.git`` (not through a link out)."""
+        real = self.inside(path)
         if os.path.getsize(real) > limit:
             raise GitError('%s is larger than %d MB' % (os.path.basename(path), limit >> 20))
         with open(real, 'rb') as f:
@@ -84,8 +89,7 @@ class Repository(object):
             for name in names:
                 pack = os.path.join(folder, name[:-4] + '.pack')
                 if name.endswith('.idx') and os.path.isfile(pack):
-                    self.read_file(pack, 1 << 40)      # inside the repository, not a link out
-                    self._packs.append(Pack(self, os.path.join(folder, name), pack))
+                    self._packs.append(Pack(self, os.path.join(folder, name), self.inside(pack)))
         return self._packs
 
     def read(self, sha, chain=0):
@@ -101,6 +105,8 @@ class Repository(object):
             header = start[:end].split(b' ')
             if end < 0 or len(header) != 2 or not header[1].isdigit():
                 raise GitError('object %s: not a git object' % sha[:12])
+            if int(header[1]) > MAX_OBJECT:
+                raise GitError('object %s is larger than %d MB' % (sha[:12], MAX_OBJECT >> 20))
             body = _inflate(raw, 0, end + 1 + int(header[1]), 'object %s' % sha[:12])[end + 1:]
             found = header[0].decode('ascii', 'replace'), body
         else:

@@ -93,6 +93,8 @@ class Pack(object):
         self.repo, self.name = repo, os.path.basename(pack_path)
         idx = repo.read_file(idx_path)
         self.offsets = self._index(idx)
+        if os.path.getsize(pack_path) < 32:
+            raise GitError('%s is not a packfile' % self.name)
         with open(pack_path, 'rb') as f:
             self.data = mmap.mmap(f.fileno(), 0, access=mmap.ACCESS_READ)
         if self.data[:4] != b'PACK':

@@ -244,8 +244,12 @@ def plan(args, out, version, log):
         refused = (teacher.get('errors') or {}).get(submission.name)
         git = None      # a git repository: the commit it is graded at (git_entries.py)
         if submission.kind == 'git' and not refused:
-            git = git_entries.choose(submission, teacher, getattr(args, 'deadline', None))
-            log('%s: %s' % (submission.name, git_entries.summary(git)))
+            try:
+                git = git_entries.choose(submission, teacher, getattr(args, 'deadline', None))
+                log('%s: %s' % (submission.name, git_entries.summary(git)))
+            except Exception as exc:    # noqa: BLE001 -- the grader's fault, for this one only
+                refused = 'the grader failed while reading its git repository (a fault of ' \
+                    'the grader\'s, not the student\'s): %s' % traceback_line(exc)
         try:
             found = commands_for(submission, teacher, profile, provided, hidden, known)
         except Exception as exc:      # noqa: BLE001 -- the grader's fault, for this one only
