@@ -207,6 +207,8 @@ def main(argv=None):
         profile = chosen['profile']
         if args.report_only:
             summaries = report.write(out, profile, teacher=teacher)
+            if gradebook.missing_line(summaries, teacher):
+                log(gradebook.missing_line(summaries, teacher))
             log(summary_line(summaries, out))
             return EXIT_OK
         folder = os.path.abspath(args.submissions)
