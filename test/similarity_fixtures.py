@@ -145,6 +145,38 @@ def make_synthetic(dest, count, seed=1):
     return template, folder
 
 
+def renamed_copy(source, dest, name, rng):
+    """A copy of the submission ``source`` as a student renames one: the
+    package called ``name`` (package.xml, ``$(find ...)`` and ``pkg=`` in its
+    launch files), its own node disguised (:func:`disguise`)."""
+    shutil.copytree(source, dest)
+    old = re.search(r'<name>([^<]*)</name>', open(os.path.join(source, 'package.xml')).read())
+    for folder, _, files in os.walk(dest):
+        for file_name in files:
+            path = os.path.join(folder, file_name)
+            with open(path, errors='replace') as f:
+                text = f.read()
+            if file_name == 'brain.py':
+                text = disguise(text, rng)
+            elif old:
+                text = re.sub(r'\b%s\b' % re.escape(old.group(1)), name, text)
+            with open(path, 'w') as f:
+                f.write(text)
+    return dest
+
+
+def vendor(root, name='explore_lite', seed=7):
+    """A public package vendored beside a submission's own (the next
+    assignment's exploration package): the same in every repository that
+    carries it, and used by nothing the run starts."""
+    rng = random.Random(seed)
+    _write(root, '%s/package.xml' % name, '<package format="2"><name>%s</name>'
+           '<version>1.0.0</version></package>\n' % name)
+    for number in range(4):
+        _write(root, '%s/src/%s_%d.py' % (name, name, number), independent_code(rng, functions=8))
+    return os.path.join(root, name)
+
+
 def _write(root, rel, text):
     path = os.path.join(root, rel)
     os.makedirs(os.path.dirname(path), exist_ok=True)

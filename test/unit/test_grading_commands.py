@@ -119,7 +119,7 @@ def test_a_typo_in_one_submissions_settings_costs_that_one_only(tmp_path):
     teacher = read_teacher_file(str(path))
     assert teacher['errors'] == {'alice': "grading.yaml: submissions: alice: unknown key "
                                           "'comands' (did you mean 'commands'?) (known: "
-                                          "commands, release, roles, skip)"}
+                                          "at, commands, commit, release, roles, skip)"}
     assert teacher['submissions'] == {'bob': {'skip': True}}
 
 

@@ -1,11 +1,14 @@
 """One grading's teacher's side does each thing once (issue 50): grading.yaml
 read once, the folder discovered once, each submission copied once (for the
 planning, the archive each worker gets, the run again in another release and
-the similarity report), the copies removed, and index.html written once with
-its similarity column. The runs themselves are a stand-in cluster's: no ROS,
-no sandbox."""
+the similarity report; a git repository's commit chosen once and its tree
+exported once), the copies removed, and index.html written once with its
+similarity column. The runs themselves are a stand-in cluster's: no ROS, no
+sandbox."""
+import io
 import json
 import os
+import tarfile
 import tempfile
 import zipfile
 
@@ -15,9 +18,10 @@ pytest.importorskip('copydetect')
 distributed = pytest.importorskip('distributed')
 from exp_assignment2.grading import cli  # noqa: E402
 from exp_assignment2.grading.plan import build_deps, launch_nodes, planning  # noqa: E402
-from exp_assignment2.grading.plan import copies, unpacking  # noqa: E402
+from exp_assignment2.grading.plan import copies, git_entries, unpacking  # noqa: E402
 from exp_assignment2.grading.report import index  # noqa: E402
 from exp_assignment2.grading.run import tasks  # noqa: E402
+from git_helpers import make_repository  # noqa: E402
 
 CODE = 'import rospy\n\n' + ''.join('def f%d(a):\n    return a * K + %d\n' % (i, i)
                                      for i in range(30))
@@ -48,12 +52,14 @@ class Done(object):
 class Cluster(object):
     version, started = '0.1.0', {}
     sent = []
+    payloads = {}
 
     def __init__(self, *args, **kwargs):
         pass
 
     def submit(self, payload):
         self.sent.append(payload['label'])
+        self.payloads[payload['label']] = payload
         return Done(payload)
 
     def poll_starts(self):
@@ -81,13 +87,17 @@ def _class(folder):
         archive.writestr('dan/scripts/dog.py', CODE.replace('K', '7'))
     with open(os.path.join(folder, 'grading.yaml'), 'w') as f:
         f.write('duration: 20\n')
+    # a git repository, graded at its last commit before the deadline (the second)
+    return make_repository(os.path.join(folder, 'eve'), [
+        '2025-03-01T10:00:00+01:00', '2025-03-02T10:00:00+01:00', '2025-03-03T10:00:00+01:00'],
+        package='eve')
 
 
 def test_a_grading_reads_discovers_copies_and_writes_its_index_once(tmp_path, monkeypatch):
     folder, out = str(tmp_path / 'class'), str(tmp_path / 'report')
-    _class(folder)
+    hashes = _class(folder)
     counts = {'grading.yaml read': 0, 'folder discovered': 0, 'copies made': 0,
-              'index written': 0}
+              'index written': 0, 'commits chosen': 0, 'commits exported': 0}
 
     def counting(module, name, key):
         real = getattr(module, name)
@@ -99,6 +109,8 @@ def test_a_grading_reads_discovers_copies_and_writes_its_index_once(tmp_path, mo
     counting(planning, 'read_teacher_file', 'grading.yaml read')
     counting(planning, 'discover', 'folder discovered')
     counting(index, '_write_index', 'index written')
+    counting(git_entries, 'choose', 'commits chosen')
+    counting(git_entries, 'export', 'commits exported')
     made = unpacking.Unpacked.__init__       # every copy or unpacking makes one
 
     def unpacked(self, dest):
@@ -118,13 +130,23 @@ def test_a_grading_reads_discovers_copies_and_writes_its_index_once(tmp_path, mo
     monkeypatch.setattr(distributed, 'wait', lambda *args, **kwargs: None)
     monkeypatch.setattr(cli, 'Cluster', Cluster)
     monkeypatch.setattr(Cluster, 'sent', [])
-    assert cli.main([folder, '--out', out, '--jobs', '1']) == 0
+    monkeypatch.setattr(Cluster, 'payloads', {})
+    assert cli.main([folder, '--out', out, '--jobs', '1',
+                     '--deadline', '2025-03-02T12:00:00+01:00']) == 0
     # each ran twice (its checks failed: run again in the next release), packed twice
-    assert len(Cluster.sent) == 8
+    assert len(Cluster.sent) == 10
     # before issue 50: 3 reads, 2 discoveries, 14 copies (planning 4, packing 6, similarity 4)
-    # and the index written, then patched
-    assert counts == {'grading.yaml read': 1, 'folder discovered': 1, 'copies made': 4,
-                      'index written': 1}
+    # and the index written, then patched; the git repository's commit chosen once (by the
+    # planning) and exported once (its copy), not again to pack it or to compare it
+    assert counts == {'grading.yaml read': 1, 'folder discovered': 1, 'copies made': 5,
+                      'index written': 1, 'commits chosen': 1, 'commits exported': 1}
+    sent = Cluster.payloads['eve']
+    assert sent['spec']['git']['commit'] == hashes[1]      # its record says so (run.json)
+    with tarfile.open(fileobj=io.BytesIO(sent['data'])) as archive:
+        node = next(m for m in archive.getmembers() if m.name.endswith('scripts/node.py'))
+        assert b'VERSION = 2\n' in archive.extractfile(node).read()
+    shared = json.load(open(os.path.join(out, 'similarity.json')))
+    assert 'eve' in {s['name'] for s in shared['submissions']}
     assert len(scratch) == 1 and not os.path.exists(scratch[0])
     text = open(os.path.join(out, 'index.html')).read()
     assert 'href="similarity.html"' in text and '>most shared with</th>' in text

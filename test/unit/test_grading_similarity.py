@@ -21,6 +21,7 @@ from exp_assignment2.grading import record
 from exp_assignment2.grading.plan import profiles
 from exp_assignment2.grading.report import index as report
 from exp_assignment2.grading.similarity import fingerprints as similarity
+from exp_assignment2.grading.similarity import pairs
 from exp_assignment2.grading.similarity import page as similarity_report  # noqa: E402
 
 
@@ -51,16 +52,17 @@ def test_disguise_changes_the_text_not_the_tokens():
 
 def test_the_copied_pair_is_top_far_above_the_rest(made):
     _, template, folder = made
-    result = similarity.compare(_read(folder), similarity.template_hashes([template]))
-    share, _, a, b = result.pairs[0]
-    assert (a, b) == ('copier', 'original')
-    assert share > 0.6
-    assert all(p[0] < share / 4 for p in result.pairs[1:])
+    result = pairs.compare(_read(folder), similarity.template_hashes([template]))
+    share, _, a, b, identical, _ = result.pairs[0]
+    assert (a, b) == ('copier', 'original') and not identical
+    assert share > 0.7
+    assert all(p.share < share / 4 for p in result.pairs[1:])
     assert result.top_for()['copier'][1] == 'original'
     shares = similarity_report.all_shares(result)
     assert len(shares) == 8 * 7 // 2        # every pair, those sharing nothing as 0
     counts = similarity_report.histogram(shares)
-    assert counts[int(share * len(counts))] == 1 and sum(counts[len(counts) // 4:]) == 1
+    top = min(len(counts) - 1, int(share * len(counts)))      # 100 %: the last bin
+    assert counts[top] == 1 and sum(counts[len(counts) // 4:]) == 1
 
 
 def test_template_and_course_file_alone_flag_nobody(made):
@@ -68,16 +70,16 @@ def test_template_and_course_file_alone_flag_nobody(made):
     students = [s for s in _read(folder) if s.name.startswith('student_')]
     for sub in students:        # their own code gone: template and course file only
         sub.files = {rel: fp for rel, fp in sub.files.items() if rel != 'scripts/brain.py'}
-    result = similarity.compare(students, similarity.template_hashes([template]))
-    assert result.pairs == []
+    result = pairs.compare(students, similarity.template_hashes([template]))
+    assert result.pairs == [] and sorted(result.empty) == sorted(s.name for s in students)
     assert {rel for _, _, rel, _ in result.base.values()} == {'scripts/lab_utils.py'}
 
 
 def test_without_a_template_everyone_shares_it(made):
     _, _, folder = made
     subs = _read(folder)[:3]        # three: the template's code is not base code yet
-    result = similarity.compare(subs, base_limit=5)
-    assert len(result.pairs) == 3 and min(p[0] for p in result.pairs) > 0.3
+    result = pairs.compare(subs, base_limit=5)
+    assert len(result.pairs) == 3 and min(p.share for p in result.pairs) > 0.3
 
 
 def test_base_limit_is_moss_m():
@@ -103,7 +105,7 @@ def test_student_text_is_escaped(tmp_path):
     for name in ('a', 'b'):
         similarity_fixtures._write(str(tmp_path / name), 'x.py', code)
     subs = _read(str(tmp_path))
-    result = similarity.compare(subs)
+    result = pairs.compare(subs)
     text = similarity_report.page(result, [])
     assert '<script>alert' not in text and '&lt;script&gt;alert' in text
 

@@ -5,6 +5,7 @@ every submission of a folder built, run in its sandbox and judged; one report.
           [--profile dog|miro|FILE] [--real-time-factor F] [--seed N]
           [--only NAME ...] [--scheduler tcp://HOST:PORT] [--report-only]
           [--template DIR ...] [--base-share F] [--similarity-only]
+          [--deadline TIME] [--reference DIR ...]
 """
 import argparse
 import multiprocessing
@@ -14,6 +15,7 @@ import sys
 
 from exp_assignment2.grading.plan import planning
 from exp_assignment2.grading.plan import profiles
+from exp_assignment2.grading.report import gradebook
 from exp_assignment2.grading.report import index as report
 from exp_assignment2.grading.run import tasks
 from exp_assignment2.grading.run.cluster import Cluster, ClusterError
@@ -56,8 +58,18 @@ def parse_args(argv):
                         ' instead of this machine alone')
     parser.add_argument('--report-only', action='store_true',
                         help='make the report again from the runs already in --out')
+    parser.add_argument('--deadline', metavar='TIME',
+                        help='a git repository is graded at its last commit before TIME (ISO '
+                        '8601: 2025-03-01T23:59, local time unless +01:00 or Z; default: '
+                        'grading.yaml\'s deadline, else its checked-out commit)')
     add_similarity_args(parser)
     args = parser.parse_args(argv)
+    if args.deadline is not None:
+        from exp_assignment2.grading.plan import deadlines
+        try:
+            args.deadline = deadlines.parse_time(args.deadline, '--deadline')
+        except TeacherFileError as exc:
+            parser.error(str(exc))
     if not 0 < args.base_share <= 1:
         parser.error('--base-share: %r is not a share in (0, 1]' % args.base_share)
     for name in ('jobs', 'repeat'):
@@ -126,7 +138,9 @@ def main(argv=None):
         read = planning.read_settings(args)
         profile = read[1]['profile']
         if args.report_only:
-            summaries = report.write(out, profile)
+            summaries = report.write(out, profile, teacher=read[0])
+            if gradebook.missing_line(summaries, read[0]):
+                log(gradebook.missing_line(summaries, read[0]))
             log(summary_line(summaries, out))
             return EXIT_OK
         _outside(os.path.abspath(args.submissions), out)
@@ -165,7 +179,7 @@ def _grade(args, out, log, read, submissions, copies):
         grade(runs, cluster, progress, copies)
     except KeyboardInterrupt:
         log('stopped: the report holds the runs that ended')
-        report.write(out, profile)
+        report.write(out, profile, teacher=read[0])
         return 130
     finally:
         signal.signal(signal.SIGTERM, previous)
@@ -173,12 +187,14 @@ def _grade(args, out, log, read, submissions, copies):
         cluster.close()
     if len({r.spec.name for r in runs}) > 1:    # read by the index, written next
         try:
-            similarity_step(args, out, log, read[0], submissions, copies)
+            similarity_step(args, out, log, read, submissions, copies)
         except KeyboardInterrupt:
             log('stopped: the report holds every run, without the similarity column')
-            report.write(out, profile)
+            report.write(out, profile, teacher=read[0])
             return 130
-    summaries = report.write(out, profile)
+    summaries = report.write(out, profile, teacher=read[0])
+    if gradebook.missing_line(summaries, read[0]):
+        log(gradebook.missing_line(summaries, read[0]))
     log(summary_line(summaries, out))
     log(feedback_line(summaries, out))
     ungraded = sorted(n for n, s in summaries.items() if s['verdict'] == 'grader_error')
@@ -199,6 +215,9 @@ def add_similarity_args(parser):
                         'base code, never counted (default 0.1)')
     parser.add_argument('--similarity-only', action='store_true',
                         help='only the similarity report: nothing built or run')
+    parser.add_argument('--reference', action='append', metavar='DIR',
+                        help='a folder of earlier years\' submissions the class is compared '
+                        'with (repeatable; never compared among themselves)')
 
 
 def similarity_only(args, out, log):
@@ -208,25 +227,31 @@ def similarity_only(args, out, log):
     from exp_assignment2.grading.plan.submissions import discover
     try:
         _outside(os.path.abspath(args.submissions), out)
-        teacher, chosen, _ = planning.read_settings(args)
+        read = planning.read_settings(args)
         submissions = discover(args.submissions)[0]
     except (TeacherFileError, SubmissionError, profiles.ProfileError) as exc:
         log('similarity: %s' % exc)
         return EXIT_USAGE
     with Copies() as copies:
-        code = similarity_step(args, out, log, teacher, submissions, copies)
+        code = similarity_step(args, out, log, read, submissions, copies)
     if code == EXIT_OK and os.path.isfile(os.path.join(out, 'index.html')):
-        report.write_index(out, chosen['profile'])
+        report.write_index(out, read[1]['profile'])
     return code
 
 
-def similarity_step(args, out, log, teacher, submissions, copies):
-    """The similarity report of ``submissions`` (their ``copies``) into ``out``;
-    never changes a verdict or a score."""
+def similarity_step(args, out, log, read, submissions, copies):
+    """The similarity report of ``submissions`` (their ``copies``) into ``out``,
+    with ``read`` (planning.read_settings'); never changes a verdict or a score."""
     from exp_assignment2.grading.similarity import step as similarity_run
     try:
+        teacher, chosen, _ = read
         templates = similarity_run.templates_of(args, teacher, os.path.abspath(args.submissions))
-        similarity_run.run(submissions, out, templates, copies, args.base_share, args.only, log)
+        runs_dir = os.path.join(out, 'runs')     # a grading's: the packages its runs built
+        similarity_run.run(submissions, out, templates, copies, args.base_share, args.only, log,
+                           references=similarity_run.references_of(args), settings={
+                               'teacher': teacher, 'profile': chosen['profile'],
+                               'deadline': args.deadline,
+                               'runs_dir': runs_dir if os.path.isdir(runs_dir) else None})
     except ImportError as exc:      # copydetect: tools/run grade installs it
         log('similarity: not made: %s' % exc)
         return EXIT_USAGE

@@ -40,6 +40,8 @@ FIELDS = (
                                'wall clock)'),
     ('repeat_command', 'the command line that runs it again by hand'),
     ('limits', "the sandbox's memory and process limits, as set"),
+    ('git', "a git repository's commit graded, how it was chosen, the commits after it, days "
+            'late and points off (plan.git_entries.choose)'),
     # how it went
     ('started', 'when the run started (epoch s)'),
     ('finished', 'when its record was written (epoch s)'),

@@ -5,9 +5,11 @@ things: the planning (its README, packages and launch files), the archive a
 worker gets (:func:`~exp_assignment2.grading.run.tasks.pack_submission`) and
 the similarity report. Each submission is put in a scratch directory once
 (``submissions.unpack``'s limits: links out of it left out, an archive
-unpacked), the first time one of them asks, and all three read that copy; it
-is removed with the grading's :class:`Copies`. The worker's run directory
-gets its own (another machine, maybe).
+unpacked, a git repository's chosen commit exported: its commit is chosen
+first, by the planning, or by the similarity step alone), the first time one
+of them asks, and all three read that copy; it is removed with the grading's
+:class:`Copies`. The worker's run directory gets its own (another machine,
+maybe).
 """
 import os
 import shutil

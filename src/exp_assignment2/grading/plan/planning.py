@@ -21,6 +21,8 @@ import os
 
 from exp_assignment2.grading.plan import assignment
 from exp_assignment2.grading.plan import build_deps
+from exp_assignment2.grading.plan import deadlines
+from exp_assignment2.grading.plan import git_entries
 from exp_assignment2.grading.plan import launch_nodes
 from exp_assignment2.grading.plan import profiles
 from exp_assignment2.grading.plan import ros_release
@@ -227,6 +229,8 @@ def plan(args, out, version, log, read, submissions, copies):
     teacher, chosen, whence = read
     check_with(teacher)
     profile = chosen['profile']
+    for line in deadlines.unknown_names(teacher, {s.name for s in submissions}):
+        log(line)
     # hidden from every run's sandbox and launch reader: the folder, the report and the
     # class's copies (a local run is on this machine, whatever its temporary directory)
     hidden = [folder if os.path.isdir(folder) else os.path.dirname(folder), out,
@@ -240,6 +244,14 @@ def plan(args, out, version, log, read, submissions, copies):
             log('%s: skipped (grading.yaml)' % submission.name)
             continue
         refused = (teacher.get('errors') or {}).get(submission.name)
+        git = None      # a git repository: the commit it is graded at (git_entries.py)
+        if submission.kind == 'git' and not refused:
+            try:
+                git = git_entries.choose(submission, teacher, getattr(args, 'deadline', None))
+                log('%s: %s' % (submission.name, git_entries.summary(git)))
+            except Exception as exc:    # noqa: BLE001 -- the grader's fault, for this one only
+                refused = 'the grader failed while reading its git repository (a fault of ' \
+                    'the grader\'s, not the student\'s): %s' % traceback_line(exc)
         try:
             found = commands_for(submission, copies, teacher, profile, provided, hidden, known)
         except Exception as exc:      # noqa: BLE001 -- the grader's fault, for this one only
@@ -255,7 +267,7 @@ def plan(args, out, version, log, read, submissions, copies):
                                                                              r + 1),
                 seed=args.seed + r, profile=mine, duration=chosen['duration'],
                 real_time_factor=chosen['real_time_factor'], hidden=hidden, version=version,
-                refused=refused, **found))
+                refused=refused, git=git, **found))
     # what the class needs from Debian, installed once, before any run (a run's
     # sandbox never installs; a worker installs what it lacks before its run)
     build_deps.install(sorted({n for spec in specs if not spec.refused for n in spec.debian}),

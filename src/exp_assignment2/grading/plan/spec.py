@@ -10,7 +10,7 @@ key (:func:`settings`).
 FIELDS = ('name', 'path', 'kind', 'label', 'seed', 'profile', 'duration',
           'real_time_factor', 'hidden', 'version', 'package', 'commands', 'commands_from',
           'readme_commands', 'notes', 'refused', 'packages', 'build', 'debian', 'rejected',
-          'release', 'release_why', 'releases_next', 'starts', 'build_packages')
+          'release', 'release_why', 'releases_next', 'starts', 'build_packages', 'git')
 
 
 class RunSpec(object):
@@ -29,7 +29,8 @@ class RunSpec(object):
     run, outside its sandbox); ``release``: the ROS release the simulator plays (None: the
     teacher's environment's), ``release_why``, and ``releases_next``: those to run it in when its
     checks fail in this one
-    (:mod:`~exp_assignment2.grading.plan.ros_release`)."""
+    (:mod:`~exp_assignment2.grading.plan.ros_release`); ``git``: the commit a git repository is
+    graded at, and why (:func:`~exp_assignment2.grading.plan.git_entries.choose`), or None."""
 
     def __init__(self, **fields):
         unknown = set(fields) - set(FIELDS)
@@ -39,7 +40,7 @@ class RunSpec(object):
                     'commands_from': '', 'readme_commands': [], 'notes': [], 'refused': None,
                     'real_time_factor': 1.0, 'label': None, 'packages': [], 'build': [],
                     'debian': [], 'rejected': None, 'release': None, 'release_why': '',
-                    'releases_next': [], 'starts': [], 'build_packages': []}
+                    'releases_next': [], 'starts': [], 'build_packages': [], 'git': None}
         for key in FIELDS:
             value = fields.get(key, defaults.get(key))
             setattr(self, key, list(value) if isinstance(value, (list, tuple)) else value)

@@ -23,11 +23,14 @@ TEACHER_FILES = {'grading.yaml', 'grading.yml'}
 
 class Submission(object):
     """One entry of the folder: ``name`` (file name less the archive suffix),
-    ``path`` (where it is), ``kind`` (``dir``, ``zip``, ``tar``, or ``other``:
+    ``path`` (where it is), ``kind`` (``dir``, ``zip``, ``tar``, ``git``: a
+    folder that is a git repository, graded at ``commit``, chosen by
+    :func:`~exp_assignment2.grading.plan.git_entries.choose`; or ``other``:
     ``why`` says what it is and why it cannot be graded)."""
 
-    def __init__(self, name, path, kind, why=None):
+    def __init__(self, name, path, kind, why=None, commit=None):
         self.name, self.path, self.kind, self.why = name, path, kind, why
+        self.commit = commit
 
     def __repr__(self):
         return 'Submission(%r, %r)' % (self.name, self.kind)
@@ -46,7 +49,8 @@ def is_package(path):
 def _kind(path):
     lower = path.lower()
     if os.path.isdir(path):
-        return 'dir'
+        from exp_assignment2.grading.plan.git_entries import is_repository
+        return 'git' if is_repository(path) else 'dir'
     if lower.endswith('.zip'):
         return 'zip'
     if any(lower.endswith(s) for s in ARCHIVE_SUFFIXES):

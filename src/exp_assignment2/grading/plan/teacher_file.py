@@ -5,6 +5,7 @@ docs/grading.md; a command is a line or ``{run: LINE, after: S | at: S,
 cwd: FOLDER}`` (when it starts, from which folder of the submission:
 :mod:`~exp_assignment2.grading.plan.starts`).
 """
+import datetime
 import difflib
 import os
 
@@ -15,8 +16,15 @@ from exp_assignment2.sim.releases import RELEASES
 TOP_KEYS = {'profile': str, 'duration': (int, float), 'commands': list, 'delay': (int, float),
             'real_time_factor': (int, float), 'submissions': dict, 'with': list,
             'template': (list, str),     # the similarity report's (similarity_run.py)
-            'release': str}              # the course's first ROS release (ros_release.py)
-ONE_KEYS = {'commands': list, 'skip': bool, 'roles': dict, 'release': str}
+            'release': str,              # the course's first ROS release (ros_release.py)
+            # a term's dates and marks (deadlines.py, git_entries.py, report/gradebook.py)
+            'deadline': (str, datetime.date), 'extensions': dict, 'late': dict,
+            'students': dict, 'gradebook': dict}
+ONE_KEYS = {'commands': list, 'skip': bool, 'roles': dict, 'release': str,
+            # a git repository graded at a commit chosen on purpose (deadlines.py)
+            'commit': (str, int, float), 'at': (str, datetime.date)}
+# the gradebooks' grade column, and Canvas's column of the identifier (report/gradebook.py)
+GRADEBOOK_KEYS = {'assignment': str, 'canvas_column': str}
 ROLE_KEYS = ('robot', 'head', 'ball')     # a submission's roles named by the teacher (roles.py)
 RELEASE_NAMES = tuple(RELEASES)      # the releases the simulator can play
 # a command of grading.yaml written as a mapping: its line, when, from where
@@ -112,6 +120,7 @@ def read_teacher_file(path):
     if not isinstance(data, dict):
         raise TeacherFileError('%s: must be a mapping of settings' % name)
     _check_keys(data, TOP_KEYS, name)
+    _check_term(data, name)
     # a mistake in one submission's settings costs that submission only: it is
     # kept in 'errors' (the grader reports it for that one) and its settings dropped
     data['errors'] = {}
@@ -120,7 +129,26 @@ def read_teacher_file(path):
             if not isinstance(settings, dict):
                 raise TeacherFileError('%s: submissions: %s: must be a mapping' % (name, who))
             _check_keys(settings, ONE_KEYS, '%s: submissions: %s' % (name, who))
+            from exp_assignment2.grading.plan import deadlines
+            deadlines.check_own(settings, '%s: submissions: %s' % (name, who))
         except TeacherFileError as exc:
             data['errors'][str(who)] = str(exc)
             del data['submissions'][who]
     return data
+
+
+def _check_term(data, name):
+    """The term's keys: dates and the late policy (deadlines.py), ``students:``
+    (each submission's identifier in the gradebooks: a string, or a number) and
+    ``gradebook:``."""
+    from exp_assignment2.grading.plan import deadlines
+    deadlines.check(data, name)
+    for who, ident in (data.get('students') or {}).items():
+        if isinstance(ident, bool) or not isinstance(ident, (str, int)) or not str(ident).strip():
+            raise TeacherFileError('%s: students: %s: %r is not an identifier (a string or '
+                                   'a number)' % (name, who, ident))
+    _check_keys(data.get('gradebook') or {}, GRADEBOOK_KEYS, '%s: gradebook' % name)
+    column = (data.get('gradebook') or {}).get('canvas_column')
+    if column is not None and column not in ('ID', 'SIS User ID', 'SIS Login ID'):
+        raise TeacherFileError("%s: gradebook: canvas_column: %r is not one of 'ID', "
+                               "'SIS User ID', 'SIS Login ID'" % (name, column))

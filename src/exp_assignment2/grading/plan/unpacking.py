@@ -262,6 +262,9 @@ def unpack(submission, dest, limit=MAX_UNPACKED):
             _unpack_zip(submission.path, dest, out, limit)
         elif submission.kind == 'tar':
             _unpack_tar(submission.path, dest, out, limit)
+        elif submission.kind == 'git':      # its commit's tree, nothing of .git run
+            from exp_assignment2.grading.plan import git_entries
+            git_entries.export(submission, dest, out, limit)
         else:
             raise SubmissionError(submission.why or 'not a submission')
     except (zipfile.BadZipFile, tarfile.TarError, EOFError, OSError, ValueError,

@@ -12,6 +12,7 @@ import base64
 import os
 import re
 
+from exp_assignment2.grading.report import commits
 from exp_assignment2.grading.report import failures as report_failures
 from exp_assignment2.grading.report import judged as report_judged
 from exp_assignment2.grading.report import packages as report_packages
@@ -152,6 +153,8 @@ def page(summary, run, pictures, profile, clean):
              '<h1>Feedback: %s</h1><p>%s</p>' % (_e(summary['name']),
                                                  _e(profile.get('title') or profile['name'])),
              _score_part(summary), '<p>%s</p>' % _e(words(summary))]
+    if commits.line(summary):       # a git repository: the commit graded, days late
+        parts.append('<p>%s</p>' % _e(commits.line(summary)))
     fix = to_fix(summary, run, clean)
     if fix:
         parts.append('<h2>What to fix</h2><ol>%s</ol>' % ''.join('<li>%s</li>' % i for i in fix))

@@ -26,6 +26,7 @@ import subprocess
 import sys
 import time
 
+from exp_assignment2.grading.report import commits
 from exp_assignment2.grading.report.feedback import cleaner, to_fix, words
 from exp_assignment2.layout import REPO
 from exp_assignment2.grading.report.html import figure
@@ -54,7 +55,7 @@ def _test_output(check, clean):
 def results(summary, run, profile, clean, execution_time=None):
     """Gradescope's results.json (a dict) for one submission's summary."""
     no_score = summary.get('score') is None
-    lines = [words(summary)]
+    lines = [words(summary)] + [t for t in [commits.line(summary)] if t]
     fixes = [_text(i) for i in to_fix(summary, run, clean)]
     if fixes:
         lines += ['', 'What to fix:'] + ['%d. %s' % (i + 1, f) for i, f in enumerate(fixes)]

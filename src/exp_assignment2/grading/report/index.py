@@ -18,7 +18,9 @@ import statistics
 
 from exp_assignment2.grading import record
 from exp_assignment2.grading.judge.verdicts import VERDICTS
+from exp_assignment2.grading.report import commits as report_commits
 from exp_assignment2.grading.report import feedback
+from exp_assignment2.grading.report import gradebook
 from exp_assignment2.grading.report import gradescope
 from exp_assignment2.grading.report import judged as report_judged
 from exp_assignment2.grading.report import marks as report_marks
@@ -127,6 +129,7 @@ def _summaries(report_dir, profile):
     every = load_runs(os.path.join(report_dir, 'runs'))
     runs, tried = report_releases.counted(every, profile)   # in several releases: the better
     summaries = report_marks.add_scores(summarise(runs), runs, profile)
+    report_commits.apply_late(summaries, runs)      # a late commit graded on purpose
     for name, summary in summaries.items():
         summary['releases'] = tried.get(name) or []
     return every, runs, summaries
@@ -139,8 +142,9 @@ def _write_index(report_dir, summaries, pictures, profile, title):
         f.write(_index(summaries, pictures, profile, title, similarity_page.tops(report_dir)))
 
 
-def write(report_dir, profile, title=None):
-    """Make the report from ``report_dir/runs``; returns the summaries."""
+def write(report_dir, profile, title=None, teacher=None):
+    """Make the report from ``report_dir/runs``; returns the summaries.
+    ``teacher``: grading.yaml's settings (the gradebooks' identifiers)."""
     runs_dir = os.path.join(report_dir, 'runs')
     every, runs, summaries = _summaries(report_dir, profile)
     pages = os.path.join(report_dir, 'pages')
@@ -161,6 +165,7 @@ def write(report_dir, profile, title=None):
         json.dump({'profile': profile, 'submissions': list(summaries.values()), 'runs': every},
                   f, indent=1, default=str)
     report_marks.write_csv(os.path.join(report_dir, 'grades.csv'), summaries, profile)
+    gradebook.write(report_dir, summaries, teacher, profile)     # Moodle's and Canvas's
     return summaries
 
 

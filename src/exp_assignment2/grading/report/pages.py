@@ -11,6 +11,7 @@ from exp_assignment2.grading import record
 from exp_assignment2.grading.judge import metrics
 from exp_assignment2.grading.judge import roles as roles_
 from exp_assignment2.grading.judge.logs import read_log
+from exp_assignment2.grading.report import commits as report_commits
 from exp_assignment2.grading.report import failures as report_failures
 from exp_assignment2.grading.report import figures
 from exp_assignment2.grading.report import judged as report_judged
@@ -77,6 +78,7 @@ def page(summary, runs, runs_dir, pictures, profile):
                      % _e(', '.join(summary['verdicts'])))
     parts.append('<h2>Started with</h2><p>from %s</p>%s' % (
         _e(main.get('commands_from')), report_starts.table(main)))
+    parts += report_commits.section(summary)
     for note in record.notes(main):
         parts.append('<p>note: %s</p>' % _e(note))
     parts += report_packages.packages_section(main)

@@ -192,6 +192,8 @@ def not_run(run, workers=(), **told):
         ended_by=ending.NOT_RUN, **told)
     if told.get('rejected'):        # what it holds, as far as it could be read
         result['packages'] = list(spec.packages)
+    if spec.git:        # the commit a git repository was to be graded at (git_entries.py)
+        result['git'] = spec.git
     result.update(verdicts.judge_told(result))
     result['teacher'] = {'workers': list(workers)}
     run.result, run.state = record.write(run.record, result), 'done'

@@ -55,7 +55,8 @@ class Run(object):
     def __init__(self, settings, spec, submission=None, stop_event=None):
         self.settings, self.spec = settings, spec
         # where the submission is here (a worker's copy), or where the spec says
-        self.submission = submission or Submission(spec.name, spec.path, spec.kind)
+        self.submission = submission or Submission(spec.name, spec.path, spec.kind,
+                                                   commit=(spec.git or {}).get('commit'))
         self.seed, self.label = spec.seed, spec.label
         self.dir = os.path.join(settings.runs_dir, self.label)
         self.work = os.path.join(self.dir, 'work')
@@ -139,6 +140,8 @@ class Run(object):
             commands=list(spec.commands), commands_from=spec.commands_from,
             notes=list(spec.notes), readme_commands=list(spec.readme_commands),
             packages=list(spec.packages), release=spec.release, release_why=spec.release_why)
+        if spec.git:        # the commit a git repository is graded at (git_entries.py)
+            result['git'] = spec.git
         try:
             self._fresh_dirs()
             self._go(result)

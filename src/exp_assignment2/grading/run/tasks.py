@@ -50,8 +50,9 @@ def pack_submission(submission, copies):
     """(kind, bytes): an archive as it is; a directory as a .tar.gz of the
     teacher's side's copy of it (``copies``, plan.copies.Copies: links inside
     it kept, none out of it: no file of the teacher's machine travels with a
-    submission; SubmissionError when it cannot be taken)."""
-    if submission.kind != 'dir':
+    submission; SubmissionError when it cannot be taken); a git repository as
+    a .tar.gz of its copy, its chosen commit's tree."""
+    if submission.kind not in ('dir', 'git'):
         with open(submission.path, 'rb') as f:
             return submission.kind, f.read()
     copy = copies.of(submission)

@@ -1,27 +1,18 @@
-"""Code shared between submissions (issue 42): MOSS's winnowing over tokens,
-with template and base code left out. Plain Python, no ROS: unit-tested alone.
+"""Code shared between submissions (issue 42), read: each submission's files
+as MOSS's winnowed fingerprints over tokens. Plain Python, no ROS: unit-tested alone.
 
 The fingerprints are PyPI's ``copydetect``'s (``CodeFingerprint``: pygments
 tokens with every name turned into one letter and comments and whitespace
 dropped, k-grams of them hashed and winnowed), so renamed identifiers,
 re-indentation and changed comments change nothing; a fingerprint is a set
-member, so reordered functions change nothing either. What is ours is the
-scale: an inverted index (fingerprint -> submissions) so that only pairs that
-share a fingerprint are compared, as MOSS does, and the two kinds of code
-that never count:
-
-- the template's (``--template``: the assignment's package, earlier labs);
-- base code: a fingerprint found in more submissions than ``base_limit``
-  (MOSS's ``-m``), e.g. a course file most students carry but nobody handed in
-  as a template. Its passages are reported, so the teacher sees what was left out.
-
-A pair's score is its shared code (tokens covered by fingerprints both have,
-beyond template and base) as a share of the smaller submission's code beyond
-the template. It is for a person to read, never a verdict.
+member, so reordered functions change nothing either. Only the code of the
+packages a run builds is read (``folders``: a repository's vendored packages,
+which nothing graded uses, are nobody's work). How pairs are compared, and
+what is left out of both sides of their share, is
+:mod:`~exp_assignment2.grading.similarity.pairs`'.
 """
-import collections
+import hashlib
 import io
-import itertools
 import logging
 import os
 
@@ -90,119 +81,40 @@ def fingerprint(text, rel, language):
 
 
 class Submission(object):
-    """One submission's files' fingerprints: ``files`` {rel: CodeFingerprint}."""
+    """One submission's files' fingerprints: ``files`` {rel: CodeFingerprint};
+    ``digest``: one hash of its files' texts (two byte-identical submissions
+    have the same; None: no code file); ``reference``: an earlier year's."""
 
-    def __init__(self, name, files):
+    def __init__(self, name, files, digest=None, reference=False):
         self.name = name
         self.files = files
-        self.own = set()            # fingerprints beyond template (then base) code
+        self.digest, self.reference = digest, reference
+        self.own = set()            # fingerprints beyond template and base code
         self.size = 0               # filtered characters the own fingerprints cover
 
     @classmethod
-    def read(cls, name, root):
-        files = {}
-        for rel, language in code_files(root):
-            with open(os.path.join(root, rel), encoding='utf-8', errors='replace') as f:
-                fp = fingerprint(f.read(), rel, language)
-            if fp is not None:
-                files[rel] = fp
-        return cls(name, files)
+    def read(cls, name, root, folders=None, reference=False):
+        """The code files under ``root``, only those in ``folders`` (relative
+        to it: the packages graded) when given."""
+        files, texts = {}, []
+        for top in (folders or ['.']):
+            base = os.path.normpath(os.path.join(root, top))
+            for rel, language in code_files(base):
+                rel = os.path.normpath(os.path.join(top, rel))
+                with open(os.path.join(root, rel), encoding='utf-8', errors='replace') as f:
+                    text = f.read()
+                texts.append(hashlib.sha1(text.encode('utf-8', 'replace')).hexdigest())
+                fp = fingerprint(text, rel, language)
+                if fp is not None:
+                    files[rel] = fp
+        digest = hashlib.sha1(' '.join(sorted(texts)).encode()).hexdigest() if texts else None
+        return cls(name, files, digest, reference)
 
     def hashes(self):
         out = set()
         for fp in self.files.values():
             out |= fp.hashes
         return out
-
-
-def _drop(fp, hashes):
-    """``fp`` without the fingerprints in ``hashes`` (in place)."""
-    gone = fp.hashes & hashes
-    if gone:
-        fp.hashes = fp.hashes - gone
-        fp.hash_idx = {h: i for h, i in fp.hash_idx.items() if h not in gone}
-
-
-def _coverage(fp, hashes):
-    """Filtered characters of ``fp`` covered by its fingerprints in ``hashes``."""
-    starts = sorted(int(i) for h in hashes for i in fp.hash_idx.get(h, ()))
-    covered, end = 0, -1
-    for start in starts:
-        covered += max(0, start + fp.k - max(start, end))
-        end = max(end, start + fp.k)
-    return covered
-
-
-class Result(object):
-    """What ``compare`` found: ``pairs`` [(share, shared, a, b)] best first,
-    ``base`` {fingerprint: (carriers, submission name, file, the
-    passage's text)} and the settings used."""
-
-    def __init__(self, submissions, pairs, base, base_limit, template_count):
-        self.submissions = submissions
-        self.pairs = pairs
-        self.base = base
-        self.base_limit = base_limit
-        self.template_count = template_count
-
-    def top_for(self):
-        """{name: (share, other name)} of each submission's highest pair."""
-        out = {}
-        for share, _, a, b in self.pairs:       # best first: the first seen is the top
-            out.setdefault(a, (share, b))
-            out.setdefault(b, (share, a))
-        return out
-
-
-def compare(submissions, template_hashes=(), base_limit=None):
-    """Every pair of ``submissions`` (``Submission``) that shares code beyond
-    template and base code, scored; a ``Result``."""
-    template_hashes = set(template_hashes)
-    if base_limit is None:
-        base_limit = default_base_limit(len(submissions))
-    index = collections.defaultdict(list)       # fingerprint -> submissions carrying it
-    for number, sub in enumerate(submissions):
-        for fp in sub.files.values():
-            _drop(fp, template_hashes)
-        sub.size = sum(_coverage(fp, fp.hashes) for fp in sub.files.values())
-        for h in sub.hashes():
-            index[h].append(number)
-    base = {}
-    for h, carriers in index.items():
-        if len(carriers) > base_limit:
-            base[h] = len(carriers)
-    base_set = set(base)
-    for sub in submissions:
-        sub.own = sub.hashes() - base_set
-    base = _describe_base(submissions, base)
-    shared = collections.defaultdict(set)        # (i, j) -> fingerprints both own
-    for h, carriers in index.items():
-        if h not in base_set and len(carriers) > 1:
-            for pair in itertools.combinations(carriers, 2):
-                shared[pair].add(h)
-    pairs = []
-    for (i, j), hashes in shared.items():
-        a, b = submissions[i], submissions[j]
-        covered = min(sum(_coverage(fp, hashes) for fp in s.files.values()) for s in (a, b))
-        smaller = min(a.size, b.size) or 1
-        first, second = sorted((a.name, b.name))     # one name for a pair's anchor
-        pairs.append((min(1.0, covered / float(smaller)), covered, first, second))
-    pairs.sort(key=lambda p: (-p[0], -p[1], p[2], p[3]))
-    return Result(submissions, pairs, base, base_limit, len(template_hashes))
-
-
-def _describe_base(submissions, base):
-    """{fingerprint: (carriers, submission, file, its text)}: where a
-    base passage is seen first, for the report's list of what was left out."""
-    out = {}
-    for sub in submissions:
-        for rel, fp in sorted(sub.files.items()):
-            for h in fp.hashes & set(base):
-                if h not in out:
-                    start = int(fp.hash_idx[h][0])
-                    raw_start, raw_end = raw_range(fp, start, start + fp.k)
-                    out[h] = (base[h], sub.name, rel, fp.raw_code[raw_start:raw_end])
-    return out
 
 
 def raw_range(fp, start, end):

@@ -10,6 +10,7 @@ import os
 import re
 
 from exp_assignment2.grading.similarity import fingerprints as similarity
+from exp_assignment2.grading.similarity import pairs as pairs_
 from exp_assignment2.grading.report.html import IMAGES_JS, e as _e, head
 
 DETAILED = 30           # pairs shown side by side (the rest: ranked, in the JSON)
@@ -32,8 +33,7 @@ def _slug(a, b):
 def all_shares(result):
     """Every pair's share, those that share nothing as 0 (they are the bulk
     the histogram shows an outlier against)."""
-    count = len(result.submissions)
-    return [p[0] for p in result.pairs] + [0.0] * (count * (count - 1) // 2 - len(result.pairs))
+    return [p.share for p in result.pairs] + [0.0] * (result.pair_count() - len(result.pairs))
 
 
 def histogram(shares, bins=BINS):
@@ -64,7 +64,7 @@ def histogram_svg(counts, pair_count):
     for i in range(0, len(counts) + 1, len(counts) // 5):
         parts.append('<text x="%.1f" y="%d" text-anchor="middle">%d%%</text>'
                      % (left + i * bar, height - bottom + 14, 100 * i // len(counts)))
-    parts.append('<text x="%d" y="%d">shared code, share of the smaller submission '
+    parts.append('<text x="%d" y="%d">code of their own both have, share of the smaller '
                  '(%d pairs; heights on a log scale)</text>'
                  % (left, height - 4, pair_count))
     parts.append('</svg>')
@@ -109,26 +109,38 @@ def _base_groups(result, shown=3, longest=600):
     return out
 
 
-def to_json(result, templates):
+def _share(pair):
+    """A pair's share as the pages write it."""
+    return 'identical' if pair.identical else '%.0f%%' % (100 * pair.share)
+
+
+def to_json(result, templates, references=()):
     """What similarity.json holds: settings, every pair, each submission's top, base code."""
     top = result.top_for()
+    olds = set(result.references)
     return {
-        'note': NOT_A_VERDICT, 'templates': list(templates),
+        'note': NOT_A_VERDICT, 'templates': list(templates), 'references': list(references),
+        'min_own': pairs_.MIN_OWN, 'nothing_of_their_own': result.empty,
         'base_limit': result.base_limit, 'template_fingerprints': result.template_count,
         'noise_threshold': similarity.NOISE, 'guarantee_threshold': similarity.GUARANTEE,
         'submissions': [{'name': s.name, 'files': sorted(s.files), 'size': int(s.size),
+                         'reference': s.name in olds,
                          'top_share': top.get(s.name, (0.0, None))[0],
                          'top_with': top.get(s.name, (0.0, None))[1]}
                         for s in result.submissions],
-        'pairs': [{'a': a, 'b': b, 'share': round(float(share), 4), 'shared': int(shared)}
-                  for share, shared, a, b in result.pairs],
+        'pairs': [{'a': p.a, 'b': p.b, 'share': round(float(p.share), 4), 'shared': int(p.shared),
+                   'identical': p.identical, 'own': [int(n) for n in p.sizes],
+                   'reference': p.a in olds or p.b in olds}
+                  for p in result.pairs],
         'base_code': [{'file': rel, 'carriers': int(carriers), 'first_in': name, 'text': text}
                       for carriers, name, rel, text in sorted(result.base.values())]}
 
 
-def _pair_section(result, share, a, b):
-    subs = {s.name: s for s in result.submissions}
-    parts = ['<h3 id="%s">%s and %s: %.0f%%</h3>' % (_slug(a, b), _e(a), _e(b), 100 * share)]
+def _pair_section(result, pair):
+    subs, a, b = {s.name: s for s in result.submissions}, pair.a, pair.b
+    parts = ['<h3 id="%s">%s and %s: %s</h3>' % (_slug(a, b), _e(a), _e(b), _share(pair))]
+    if pair.identical:
+        parts.append('<p>The same code files, byte for byte.</p>')
     passages = similarity.shared_passages(subs[a], subs[b])
     if not passages:
         parts.append('<p>No passage to show.</p>')
@@ -140,32 +152,41 @@ def _pair_section(result, share, a, b):
     return ''.join(parts)
 
 
-def page(result, templates):
+def page(result, templates, references=()):
     """similarity.html's text."""
     pairs = result.pairs
+    olds = set(result.references)
     parts = [head('Similarity', STYLE, IMAGES_JS),
              '<h1>Code shared between submissions</h1><p class="note">%s</p>' % _e(NOT_A_VERDICT),
-             '<p>%d submissions, %d pairs sharing code beyond template and base code (the '
-             'others share none). Template: %s (%d fingerprints never counted). Base code: a '
-             'passage found in more than %d submissions (%d fingerprints, listed below).</p>'
-             % (len(result.submissions), len(pairs),
+             '<p>%d submissions%s, %d pairs sharing code of their own (the others share none). '
+             'What the whole class shares is left out of both sides of a share: the template, '
+             '%s (%d fingerprints), and base code, a passage found in more than %d submissions '
+             '(%d fingerprints, listed below). A share is the code of their own both have, of '
+             'the smaller one\'s own code (at least %d token characters).</p>'
+             % (len(result.submissions) - len(olds),
+                ' and %d of earlier years (%s), compared with the class only' % (
+                    len(olds), _e(', '.join(references))) if olds else '', len(pairs),
                 _e(', '.join(templates) or 'none given'), result.template_count,
-                result.base_limit, len(result.base)),
-             '<p><img src="similarity-histogram.svg" alt="histogram of all pairs"></p>',
-             '<h2>Pairs, most shared first</h2><table><thead><tr><th>#</th><th>pair</th>'
-             '<th>shared, of the smaller</th><th>shared (token characters)</th></tr>'
-             '</thead><tbody>']
-    for rank, (share, shared, a, b) in enumerate(pairs[:LISTED], 1):
-        name = '%s and %s' % (_e(a), _e(b))
+                result.base_limit, len(result.base), pairs_.MIN_OWN),
+             '<p><img src="similarity-histogram.svg" alt="histogram of all pairs"></p>']
+    if result.empty:
+        parts.append('<p>No code of their own beyond template and base code: %s.</p>'
+                     % _e(', '.join(result.empty)))
+    parts.append('<h2>Pairs, most shared first</h2><table><thead><tr><th>#</th><th>pair</th>'
+                 '<th>shared, of the smaller</th><th>shared (token characters)</th>'
+                 '<th>their own code</th></tr></thead><tbody>')
+    for rank, pair in enumerate(pairs[:LISTED], 1):
+        name = '%s and %s' % tuple(_e(n) + (' (earlier year)' if n in olds else '')
+                                   for n in (pair.a, pair.b))
         if rank <= DETAILED:
-            name = '<a href="#%s">%s</a>' % (_slug(a, b), name)
-        parts.append('<tr><td>%d</td><td>%s</td><td>%.0f%%</td><td>%d</td></tr>'
-                     % (rank, name, 100 * share, shared))
+            name = '<a href="#%s">%s</a>' % (_slug(pair.a, pair.b), name)
+        parts.append('<tr><td>%d</td><td>%s</td><td>%s</td><td>%d</td><td>%d and %d</td></tr>'
+                     % (rank, name, _share(pair), pair.shared, pair.sizes[0], pair.sizes[1]))
     parts.append('</tbody></table>')
     if len(pairs) > LISTED:
         parts.append('<p>%d more pairs in similarity.json.</p>' % (len(pairs) - LISTED))
     parts.append('<h2>Shared passages, side by side</h2>')
-    parts += [_pair_section(result, share, a, b) for share, _, a, b in pairs[:DETAILED]]
+    parts += [_pair_section(result, pair) for pair in pairs[:DETAILED]]
     parts.append('<h2>Base code: passages in more than %d submissions, never counted</h2>'
                  '<table><thead><tr><th>file (where first seen)</th><th>passages</th>'
                  '<th>most submissions</th><th>examples</th></tr></thead><tbody>'
@@ -177,15 +198,15 @@ def page(result, templates):
     return ''.join(parts)
 
 
-def write(out, result, templates=()):
+def write(out, result, templates=(), references=()):
     """similarity.html, similarity-histogram.svg and similarity.json in ``out``."""
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, 'similarity-histogram.svg'), 'w') as f:
         f.write(histogram_svg(histogram(all_shares(result)), len(all_shares(result))))
     with open(os.path.join(out, 'similarity.html'), 'w') as f:
-        f.write(page(result, templates))
+        f.write(page(result, templates, references))
     with open(os.path.join(out, 'similarity.json'), 'w') as f:
-        json.dump(to_json(result, templates), f, indent=1)
+        json.dump(to_json(result, templates, references), f, indent=1)
 
 
 def tops(out):
