@@ -1,6 +1,7 @@
 """What the grader reads in a run's logs (exp_assignment2.grading.judge.logs), on hand-written
 logs in roslaunch's, Python's, Qt's and C++'s words."""
 from exp_assignment2.grading.judge import logs
+from exp_assignment2.grading.judge import python_errors
 
 ROSLAUNCH_MISSING = '''... logging to /w/ros_home/log/abc/roslaunch-host-77.log
 started roslaunch server http://localhost:40000/
@@ -99,20 +100,20 @@ def test_a_python_crash_has_its_traceback_and_no_abort():
     (d,) = logs.deaths([('logs/command-0.log', PY_CRASH)])
     assert (d['exit'], d['abort']) == ('1', '')
     assert d['output'].splitlines()[-1] == 'RuntimeError: the dog has no legs'
-    (error,) = logs.python_errors([('logs/command-0.log', PY_CRASH)])
+    (error,) = python_errors.python_errors([('logs/command-0.log', PY_CRASH)])
     assert (error['line'], error['summary']) == (2, 'RuntimeError: the dog has no legs')
 
 
 def test_tracebacks_in_a_log_and_quiet_endings_left_out():
     text = ('[INFO] starting\nTraceback (most recent call last):\n  File "x.py", line 3, '
             'in <module>\n    go()\nZeroDivisionError: division by zero\n[INFO] more\n')
-    found = logs.tracebacks(text, 'logs/command-0.log')
+    found = python_errors.tracebacks(text, 'logs/command-0.log')
     assert [(e['line'], e['summary']) for e in found] == [(2, 'ZeroDivisionError: division '
                                                               'by zero')]
     quiet = 'Traceback (most recent call last):\n  File "x.py", line 3\nKeyboardInterrupt\n'
-    assert logs.python_errors([('a', quiet)]) == []
+    assert python_errors.python_errors([('a', quiet)]) == []
     # a node's stdout and its own log say the same traceback: once
-    assert len(logs.python_errors([('a', text), ('b', text)])) == 1
+    assert len(python_errors.python_errors([('a', text), ('b', text)])) == 1
 
 
 def test_colours_and_the_terminal_title_are_not_read(tmp_path):
@@ -206,7 +207,7 @@ rosgraph.network.ROSHandshakeException: connection from sender terminated before
 def test_rospy_transport_noise_is_no_python_error():
     """A peer that hung up before its handshake (seen in a CI run, in the
     simulator's log): rospy logs a traceback; nothing the node's code did."""
-    assert logs.python_errors([('ros_home/log/r/dog-5.log', HANDSHAKE)]) == []
+    assert python_errors.python_errors([('ros_home/log/r/dog-5.log', HANDSHAKE)]) == []
 
 
 def test_the_simulators_own_log_is_the_graders(tmp_path):
@@ -242,25 +243,25 @@ SyntaxError: Missing parentheses in call to 'print'. Did you mean print(...)?
 
 def test_a_script_that_cannot_compile_is_a_python_error_with_its_file_and_line():
     """Python prints a script's SyntaxError without a Traceback line."""
-    (error,) = logs.python_errors([('logs/command-0.log', SYNTAX_AT_START)])
+    (error,) = python_errors.python_errors([('logs/command-0.log', SYNTAX_AT_START)])
     assert (error['line'], error['summary']) == (
         3, "SyntaxError: Missing parentheses in call to 'print'. Did you mean print(...)? "
            "(/w/src/scripts/dog.py, line 12)")
     assert error['excerpt'].splitlines()[0] == '  File "/w/src/scripts/dog.py", line 12'
     indentation = ('  File "x.py", line 4\n    return 3\n              ^\n'
                    'IndentationError: unindent does not match any outer indentation level\n')
-    (error,) = logs.tracebacks(indentation, 'a')
+    (error,) = python_errors.tracebacks(indentation, 'a')
     assert error['summary'] == ('IndentationError: unindent does not match any outer '
                                 'indentation level (x.py, line 4)')
     # said in the command's output and in the node's own log: once
-    assert len(logs.python_errors([('a', SYNTAX_AT_START), ('b', SYNTAX_AT_START)])) == 1
+    assert len(python_errors.python_errors([('a', SYNTAX_AT_START), ('b', SYNTAX_AT_START)])) == 1
 
 
 def test_a_syntax_error_inside_a_traceback_is_counted_once():
     text = ('Traceback (most recent call last):\n  File "n.py", line 1, in <module>\n'
             '    import helper\n  File "/w/helper.py", line 3\n    print "x"\n    ^^^^^^^^^\n'
             "SyntaxError: Missing parentheses in call to 'print'. Did you mean print(...)?\n")
-    (error,) = logs.tracebacks(text, 'a')
+    (error,) = python_errors.tracebacks(text, 'a')
     assert error['summary'].startswith('SyntaxError: Missing parentheses')
     assert error['excerpt'].startswith('Traceback')
 
@@ -268,4 +269,4 @@ def test_a_syntax_error_inside_a_traceback_is_counted_once():
 def test_waiting_for_the_keyboard_and_a_file_line_alone_are_no_errors():
     text = ('[original-env] waited for keyboard input at scripts/command_request.py:37\n'
             '  File "x.py", line 3\n    not followed by an error\nall done\n')
-    assert logs.python_errors([('logs/command-0.log', text)]) == []
+    assert python_errors.python_errors([('logs/command-0.log', text)]) == []

@@ -1,8 +1,7 @@
 """What the grader reads in a run's logs, in one place (no ROS).
 
-* :func:`tracebacks`, :func:`python_errors`: Python's tracebacks, each once,
-  and the SyntaxError (IndentationError, TabError) of a script that could not
-  start, which Python prints without a ``Traceback`` line;
+* the Python errors in them: :mod:`.python_errors` (tracebacks, each once,
+  and the SyntaxError of a script that could not start);
 * :func:`deaths`: roslaunch's ``[NODE] process has died [pid, exit code, cmd]``
   lines, and its ``REQUIRED process [NODE] has died!`` (a ``required="true"``
   node: roslaunch then shuts its launch down), each with what the node said
@@ -53,18 +52,9 @@ ABORT = re.compile(r'(qt\.qpa\.\S+: .*|.*Qt platform plugin.*|.*[Cc]annot (?:ope
                    r'.*\*\*\* .+ \*\*\*.*|.*[Aa]ssertion .* failed.*|.*Segmentation fault.*|'
                    r'Fatal Python error: .*|(?:free|malloc|realloc|double free)\b.*\(\).*)$')
 SIMULATOR = ('scripts/simulator.py', '/gzserver')
-QUIET_ENDINGS = ('KeyboardInterrupt', 'ROSInterruptException', 'rospy.exceptions.ROSInterrupt',
-                 'ROSTimeMovedBackwardsException',
-                 # rospy's transport, in any node's log, when a peer hangs up before its
-                 # handshake (a probe, a client that exited): nothing the node's code did
-                 'ROSHandshakeException: connection from sender terminated before handshake')
 # roslaunch's own log: each node's whole command line, its __log:= file among its args
 START_ARGS = re.compile(r'process\[[^\]]+\]: start w/ args \[\[(.*)\]\]')
 QUOTED_LOG = re.compile(r"__log:=([^'\s,\]]+)")
-TRACEBACK = re.compile(r'^Traceback \(most recent call last\):')
-# a script Python cannot compile: '  File "x.py", line 3', its line, carets, then the error
-SYNTAX_AT = re.compile(r'^\s*File "(?P<file>[^"]+)", line (?P<line>\d+)\s*$')
-SYNTAX_ERROR = re.compile(r'^(?:SyntaxError|IndentationError|TabError): ')
 LOG_ARG = re.compile(r'__log:=(\S+)')
 COMMAND_LOG = re.compile(r'^logs/command-(\d+)\.log$')
 
@@ -129,53 +119,6 @@ def exit_name(code):
         except ValueError:
             pass
     return str(code)
-
-
-def tracebacks(text, source):
-    """[{source, line, summary, excerpt}] of the Python tracebacks in a log's text,
-    and of the syntax errors printed without one (their summary names the file and
-    line, as Python's str() of the error does)."""
-    lines = text.splitlines()
-    found, inside = [], set()
-    for i, line in enumerate(lines):
-        if not TRACEBACK.match(line.strip()):
-            continue
-        end = i + 1
-        while end < len(lines) and (lines[end].startswith((' ', '\t')) or
-                                    lines[end].startswith('During handling')):
-            end += 1
-        inside.update(range(i, end + 1))
-        summary = lines[end].strip() if end < len(lines) else 'Traceback'
-        found.append({'source': source, 'line': i + 1, 'summary': summary[:300],
-                      'excerpt': '\n'.join(lines[max(0, i - 3):end + 1])[-4000:]})
-    for i, line in enumerate(lines):
-        at = SYNTAX_AT.match(line) if i not in inside else None
-        if not at:
-            continue
-        end = i + 1
-        while end < len(lines) and end <= i + 4 and lines[end].startswith((' ', '\t')):
-            end += 1
-        if end < len(lines) and SYNTAX_ERROR.match(lines[end].strip()):
-            summary = '%s (%s, line %s)' % (lines[end].strip(), at.group('file'), at.group('line'))
-            found.append({'source': source, 'line': i + 1, 'summary': summary[:300],
-                          'excerpt': '\n'.join(lines[i:end + 1])[-4000:]})
-    return sorted(found, key=lambda error: error['line'])
-
-
-def python_errors(logs):
-    """The tracebacks of the logs, each once (a node's stdout and its own log repeat them)."""
-    seen, errors = set(), []
-    for rel, text in logs:
-        for error in tracebacks(text, rel):
-            if any(error['summary'].startswith(q) or q in error['summary']
-                   for q in QUIET_ENDINGS):
-                continue
-            key = error['excerpt'].split('Traceback', 1)[-1]
-            if key in seen:
-                continue
-            seen.add(key)
-            errors.append(error)
-    return errors
 
 
 def abort_message(lines):

@@ -8,6 +8,7 @@ import re
 
 from exp_assignment2.grading.judge import logs as logs_
 from exp_assignment2.grading.judge import metrics
+from exp_assignment2.grading.judge.python_errors import python_errors
 from exp_assignment2.grading.judge import roles as roles_
 
 
@@ -168,7 +169,7 @@ def gather(work, record_dir, result, profile):
                 sim_time=(result.get('truth') or {}).get('sim_time') or 0.0,
                 duration=float(result.get('duration') or profile['duration']),
                 memory_limit_mb=profile['memory_limit_mb'],
-                errors=logs_.python_errors(
+                errors=python_errors(
                     [(rel, text) for rel, text in run_logs if rel not in simulators]),
                 display_error=next((e['error'] for e in events if e.get('event') == 'display'
                                     and e.get('error')), None),
