@@ -15,6 +15,7 @@ import tarfile
 import zipfile
 
 import launch_rule_fixtures
+from broken_fixtures import BROKEN_CPP, HOSTILE, IDLE, RAISES  # noqa: F401 (as before)
 import start_fixtures
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -34,118 +35,6 @@ EXPECTED.update(__import__('shape_fixtures').EXPECTED)     # each shape a submis
 EXPECTED.update(__import__('release_fixtures').EXPECTED)   # the ROS release it was written for
 EXPECTED.update(__import__('py2_fixtures').EXPECTED)       # Python 2, and the keyboard
 EXPECTED.update(start_fixtures.EXPECTED)     # a README's cd and typo, a start script's timing
-
-RAISES = '''#!/usr/bin/env python3
-import rospy
-rospy.init_node('dog')
-raise RuntimeError('the dog has no legs')
-'''
-
-IDLE = '''#!/usr/bin/env python3
-import rospy
-rospy.init_node('dog')
-rospy.spin()
-'''
-
-BROKEN_CPP = '''#include <ros/ros.h>
-int main(int argc, char **argv) {
-  ros::init(argc, argv, "counter")
-  return 0;
-}
-'''
-
-# Every escape the sandbox must stop, each tried and what happened printed:
-# writing outside its directory, reading the other runs, filling the
-# memory, forking without end, a gigabyte of log, killing processes by
-# name; then it never exits, whatever signal it gets.
-HOSTILE = r"""#!/usr/bin/env python3
-import glob, os, signal, subprocess, sys, time
-import rospy
-rospy.init_node('dog')
-here = os.path.abspath(os.path.dirname(__file__))
-def report(*words):
-    print(*words, flush=True)
-for path in ['/tmp/../root/hostile', '/etc/hostile', '/work/hostile',
-             os.path.join(here, '..', '..', '..', '..', '..', 'hostile')]:
-    try:
-        with open(path, 'w') as f:
-            f.write('hostile')
-        report('WROTE', path)
-    except OSError as exc:
-        report('REFUSED', path, exc.strerror)
-report('OTHERS', [f for f in glob.glob('/*/*/*/*/work/src/package.xml') +
-                  glob.glob('/*/*/*/*/*/work/src/package.xml') if here not in f])
-if os.fork() == 0:           # the memory
-    hog = []
-    while True:
-        hog.append(b'x' * (50 * 1024 * 1024))
-if os.fork() == 0:           # forks until the run's process limit says no
-    count = 0
-    while True:
-        try:
-            if os.fork() == 0:
-                time.sleep(3600)
-                os._exit(0)
-            count += 1
-        except OSError:
-            report('FORKED', count)
-            break
-    time.sleep(3600)
-    os._exit(0)
-for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGXFSZ):
-    signal.signal(sig, signal.SIG_IGN)
-line = 'x' * 1023 + '\n'
-try:
-    for _ in range(1 << 20):      # a gigabyte of log
-        sys.stdout.write(line)
-    report('LOGGED 1 GB')
-except BaseException as exc:
-    report('LOG-STOPPED', type(exc).__name__)
-subprocess.run(['pkill', '-f', 'roslaunch'])
-subprocess.run(['killall', 'python3'])
-while True:
-    time.sleep(1)
-"""
-
-
-# "everything.launch; alternatively these two in two terminals", and a world with
-# the ball at random or at a fixed place: one world runs, the rest are noted
-ALTERNATIVES = """# My dog
-
-Start everything with:
-
-    roslaunch exp_assignment2 everything.launch
-
-Alternatively, in two terminals:
-
-    roslaunch exp_assignment2 world_random.launch
-    rosrun exp_assignment2 dog.py
-
-For the ball at a fixed place: `roslaunch exp_assignment2 world_fixed.launch`
-"""
-# written before the package was renamed in package.xml (exp_assignment2)
-OTHER_NAME = """# My dog
-
-```
-roslaunch assignment2 gazebo_world.launch
-```
-"""
-
-
-def _alternatives(dest):
-    launch = os.path.join(dest, 'launch')
-    with open(os.path.join(launch, 'gazebo_world.launch')) as f:
-        everything = f.read()
-    world = re.sub(r'\n  <node name="dog".*?/>\n', '\n', everything)
-    assert world != everything
-    os.rename(os.path.join(launch, 'gazebo_world.launch'),
-              os.path.join(launch, 'everything.launch'))
-    for name, text in (('world_random.launch', world),
-                       ('world_fixed.launch', world.replace('-x 4 -y 1.5', '-x 3 -y -2'))):
-        with open(os.path.join(launch, name), 'w') as f:
-            f.write(text)
-    _replace(dest, 'README.md', ALTERNATIVES)
-
 
 # as the assignment's template does: every frame shown, in the subscriber's
 # thread, with the circle found on the ball drawn on it
@@ -373,9 +262,9 @@ def make_folder(dest, names=None):
         elif name == 'own_world':
             _own_world(package)
         elif name == 'alternatives':
-            _alternatives(package)
+            start_fixtures.alternatives(package)
         elif name == 'other_name':
-            _replace(package, 'README.md', OTHER_NAME)
+            _replace(package, 'README.md', start_fixtures.OTHER_NAME)
         elif name == 'imshow':
             _imshow(package)
         elif name == 'renamed':
