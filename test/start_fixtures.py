@@ -2,6 +2,9 @@
 (test/grading_fixtures.py writes them beside the others; test_grader.py
 reads their grading): each is the dog that works, started another way.
 
+* ``alternatives``: the README offers ``everything.launch``, or its world and the
+  dog in two terminals, and a world with the ball elsewhere: one runs, the rest
+  are noted; ``other_name``: a README written before package.xml was renamed;
 * ``readme_cd_typo``: the world's launch file and the dog's apart; the
   README goes into ``launch/`` and runs the world's by its path, and names the
   dog's with a typo (``dog_beaviour.launch`` for ``dog_behavior.launch``);
