@@ -9,15 +9,17 @@ every submission of a folder built, run in its sandbox and judged; one report.
 import argparse
 import multiprocessing
 import os
-import signal
 import sys
 
 from exp_assignment2.grading.plan import planning
 from exp_assignment2.grading.plan import profiles
 from exp_assignment2.grading.report import index as report
+from exp_assignment2.grading.report import resumed as report_resumed
 from exp_assignment2.grading.run import tasks
 from exp_assignment2.grading.run.cluster import Cluster, ClusterError
 from exp_assignment2.grading.run.dispatch import grade
+from exp_assignment2.grading.run.resume import Resume
+from exp_assignment2.grading.run.stopping import Stopping
 from exp_assignment2.grading.plan.commands import TeacherFileError
 from exp_assignment2.grading.plan.copies import Copies
 from exp_assignment2.grading.progress import Progress
@@ -26,10 +28,6 @@ from exp_assignment2.grading.plan.submissions import SubmissionError
 
 # 4: the report is written, but some runs could not be graded (grader_error: run them again)
 EXIT_OK, EXIT_USAGE, EXIT_CLUSTER, EXIT_NOT_ALL_GRADED = 0, 2, 3, 4
-
-
-def _interrupt(*_):
-    raise KeyboardInterrupt()
 
 
 def parse_args(argv):
@@ -124,9 +122,8 @@ def main(argv=None):
     try:
         # the profile by the one precedence: --profile, grading.yaml's, dog
         read = planning.read_settings(args)
-        profile = read[1]['profile']
         if args.report_only:
-            summaries = report.write(out, profile)
+            summaries = report.write(out, read[1]['profile'])
             log(summary_line(summaries, out))
             return EXIT_OK
         _outside(os.path.abspath(args.submissions), out)
@@ -159,18 +156,27 @@ def _grade(args, out, log, read, submissions, copies):
            'on the workers of ' + args.scheduler if args.scheduler else '%d at once' % jobs,
            runs[0].settings.duration, profile['name'], out))
     progress = Progress(len(runs), jobs, extra=lambda: '%d workers' % cluster.worker_count())
-    previous = signal.getsignal(signal.SIGTERM)
-    signal.signal(signal.SIGTERM, _interrupt)
-    try:
-        grade(runs, cluster, progress, copies)
-    except KeyboardInterrupt:
-        log('stopped: the report holds the runs that ended')
+    resume = Resume(os.path.join(out, 'runs'), copies, log)
+    with Stopping() as stopping:
+        try:
+            stopped = grade(runs, cluster, progress, copies, stopping, resume)
+        except KeyboardInterrupt:
+            stopped = [r for r in runs if r.state != 'done']
+            stopping.asked = stopping.asked or 1
+        finally:
+            progress.close()
+            cluster.close()
+    if stopping.asked:
+        report_resumed.write(out, resume.summary(runs, stopped))
+        log('stopped: the report holds the runs that ended; %d not run: grade again with the '
+            'same --out to run them (the others are kept)' % len(stopped))
         report.write(out, profile)
         return 130
-    finally:
-        signal.signal(signal.SIGTERM, previous)
-        progress.close()
-        cluster.close()
+    dropped = resume.drop_others(runs)
+    if dropped:
+        log('taken away: %d runs of an earlier plan of these submissions (%s)'
+            % (len(dropped), ', '.join(dropped)))
+    report_resumed.write(out, resume.summary(runs, []))
     if len({r.spec.name for r in runs}) > 1:    # read by the index, written next
         try:
             similarity_step(args, out, log, read[0], submissions, copies)

@@ -109,18 +109,28 @@ def pack_run(run_dir, limit=RETURN_LIMIT):
 
 
 def unpack_run(data, run_dir):
-    """The run's directory from ``pack_run``'s bytes (regular files only, inside it)."""
+    """The run's directory from ``pack_run``'s bytes (regular files only,
+    inside it), all but its record; the record's bytes (None: none came), for
+    the teacher's side to write last (record.write), once the rest is there.
+    An earlier record of the run is taken away first (record.unfinish)."""
+    record.unfinish(os.path.join(run_dir, 'record'))
     shutil.rmtree(run_dir, ignore_errors=True)
     os.makedirs(run_dir)
     root = os.path.realpath(run_dir)
+    own = None
     with tarfile.open(fileobj=io.BytesIO(data), mode='r:gz') as archive:
         for member in archive:
             target = os.path.realpath(os.path.join(run_dir, member.name))
             if not member.isfile() or not target.startswith(root + os.sep):
                 continue
+            if member.name == RECORD:
+                with archive.extractfile(member) as src:
+                    own = src.read()
+                continue
             os.makedirs(os.path.dirname(target), exist_ok=True)
             with archive.extractfile(member) as src, open(target, 'wb') as out:
                 shutil.copyfileobj(src, out)
+    return own
 
 
 def _watch(run, stop):
