@@ -53,7 +53,9 @@ def parse_args(argv):
                         help='run on the workers of this Dask scheduler (tools/run grade-worker)'
                         ' instead of this machine alone')
     parser.add_argument('--report-only', action='store_true',
-                        help='make the report again from the runs already in --out')
+                        help='make the report again from the runs already in --out, each '
+                        'judged again with the profile (a changed threshold: whose marks '
+                        'changed, in changes.html)')
     add_similarity_args(parser)
     args = parser.parse_args(argv)
     if not 0 < args.base_share <= 1:
@@ -123,9 +125,7 @@ def main(argv=None):
         # the profile by the one precedence: --profile, grading.yaml's, dog
         read = planning.read_settings(args)
         if args.report_only:
-            summaries = report.write(out, read[1]['profile'])
-            log(summary_line(summaries, out))
-            return EXIT_OK
+            return report_only(out, read, log)
         _outside(os.path.abspath(args.submissions), out)
         submissions = planning.entries(args, log)
     except (profiles.ProfileError, TeacherFileError, SubmissionError) as exc:
@@ -192,6 +192,27 @@ def _grade(args, out, log, read, submissions, copies):
         log('not graded, through a fault of the grader\'s (grade them again with --only): %s'
             % ' '.join(ungraded))
         return EXIT_NOT_ALL_GRADED
+    return EXIT_OK
+
+
+def report_only(out, read, log):
+    """``--report-only``: every run of ``out`` judged again from its records
+    with the profile chosen (and grading.yaml's roles of each submission),
+    nothing run; the report written, with what changed (report.changes)."""
+    from exp_assignment2.grading.judge import again
+    from exp_assignment2.grading.report import changes
+    teacher, chosen, _ = read
+    profile, own = chosen['profile'], teacher.get('submissions') or {}
+    runs_dir = os.path.join(out, 'runs')
+    judged = again.all_rejudged(runs_dir, report.load_runs(runs_dir), lambda name: (
+        profiles.with_teacher_roles(profile, (own.get(name) or {}).get('roles'))))
+    summaries = report.write(out, profile, runs=judged)
+    log('judged %d runs again from their records, with profile %s' % (len(judged),
+                                                                      profile['name']))
+    said = changes.terminal_line(out)
+    if said:
+        log(said)
+    log(summary_line(summaries, out))
     return EXIT_OK
 
 

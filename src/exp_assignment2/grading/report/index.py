@@ -18,6 +18,7 @@ import statistics
 
 from exp_assignment2.grading import record
 from exp_assignment2.grading.judge.verdicts import VERDICTS
+from exp_assignment2.grading.report import changes as report_changes
 from exp_assignment2.grading.report import feedback
 from exp_assignment2.grading.report import gradescope
 from exp_assignment2.grading.report import judged as report_judged
@@ -85,7 +86,7 @@ def summarise(runs):
 
 def _index(summaries, pictures, profile, title, similar=None, top=()):
     """index.html's text; ``similar``: similarity.json's tops (its column), or None;
-    ``top``: [HTML] said first (a resumed or stopped grading)."""
+    ``top``: [HTML] said first (the marks changed, a resumed or stopped grading)."""
     check_names = [c['name'] for c in profile['checks']]
     counts = collections.Counter(s['verdict'] for s in summaries.values())
     parts = [head(title, teacher_pages.STYLE, SORT_JS + IMAGES_JS),
@@ -140,14 +141,17 @@ def _write_index(report_dir, summaries, pictures, profile, title):
     title = title or 'Grading: %s' % (profile.get('title') or profile['name'])
     with open(os.path.join(report_dir, 'index.html'), 'w') as f:
         f.write(_index(summaries, pictures, profile, title, similarity_page.tops(report_dir),
+                       [report_changes.index_line(report_dir)] +
                        report_resumed.paragraph(report_dir)))
 
 
 def write(report_dir, profile, title=None, runs=None):
     """Make the report from ``report_dir/runs`` (``runs``: their records,
-    judged again: judge.again); returns the summaries."""
+    judged again: judge.again); returns the summaries. The marks it
+    publishes are kept beside the earlier ones (report.changes)."""
     runs_dir = os.path.join(report_dir, 'runs')
     every, runs, summaries = _summaries(report_dir, profile, runs)
+    report_changes.publish(report_dir, summaries, profile)
     pages = os.path.join(report_dir, 'pages')
     img_dir = os.path.join(pages, 'img')
     shutil.rmtree(pages, ignore_errors=True)
