@@ -197,3 +197,16 @@ def test_the_report_says_a_grading_was_resumed_or_stopped(tmp_path):
     assert '<li>ben: not finished</li><li>cat: planned otherwise: x</li>' in text
     assert 'Stopped before its end' in text and '1 run not run (dan)' in text
     assert json.loads((tmp_path / 'resume.json').read_text())['kept'] == ['ann']
+
+
+def test_the_scratch_of_a_killed_grader_is_removed_by_the_next(tmp_path):
+    from exp_assignment2.grading import scratch
+    dead = subprocess.Popen(['true'])
+    dead.wait()
+    (tmp_path / ('exp2-grade-%d-abc_12' % dead.pid) / 'runs').mkdir(parents=True)
+    (tmp_path / ('exp2-teacher-%d-x9' % dead.pid)).mkdir()
+    (tmp_path / 'exp2-grade-8vuqbibf').mkdir()        # an older grader's: not told whose
+    mine = scratch.make('grade', str(tmp_path))
+    assert os.path.basename(mine).startswith('exp2-grade-%d-' % os.getpid())
+    assert sorted(os.listdir(str(tmp_path))) == sorted([os.path.basename(mine),
+                                                        'exp2-grade-8vuqbibf'])

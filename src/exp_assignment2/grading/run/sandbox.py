@@ -19,6 +19,8 @@ import signal
 import subprocess
 import time
 
+from exp_assignment2.grading.scratch import alive
+
 CGROUP_ROOT = '/sys/fs/cgroup'
 FILE_LIMIT = 64 * 1024 * 1024        # bytes: one file (a log) at most
 SANDBOX_USER = 1000
@@ -52,16 +54,6 @@ def _own_cgroup_v1(controller):
 GROUP_PREFIX = 'exp2-grade-'
 
 
-def _alive(pid):
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except OSError:         # another user's: alive
-        return True
-    return True
-
-
 def remove_stale_groups(parent):
     """The control groups a grader process made in ``parent`` and left when
     it was killed (SIGKILL leaves no time for :meth:`ControlGroups.remove`):
@@ -78,7 +70,7 @@ def remove_stale_groups(parent):
             pid = int(name.rsplit('-', 2)[1])
         except (IndexError, ValueError):
             continue
-        if _alive(pid):
+        if alive(pid):
             continue
         directory = os.path.join(parent, name)
         try:

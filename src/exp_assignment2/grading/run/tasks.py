@@ -13,11 +13,11 @@ import io
 import os
 import shutil
 import tarfile
-import tempfile
 import threading
 import time
 
 from exp_assignment2.grading import record
+from exp_assignment2.grading import scratch as grader_scratch
 from exp_assignment2.grading.paths import PACKAGE_XML
 from exp_assignment2.grading.run.runner import Run, RunSettings
 from exp_assignment2.grading.plan.spec import RunSpec
@@ -160,7 +160,7 @@ def run_task(payload, stop=None, scratch_root=None):
     if payload['version'] != mine:
         raise VersionMismatch('this worker has exp_assignment2 %s, the teacher %s: it '
                               'refuses the run' % (mine, payload['version']))
-    scratch = tempfile.mkdtemp(prefix='exp2-grade-', dir=scratch_root)
+    scratch = grader_scratch.make('grade', scratch_root)
     try:
         spec = RunSpec.from_dict(payload['spec'])
         kind = payload['packed_kind']
