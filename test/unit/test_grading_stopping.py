@@ -126,8 +126,8 @@ def test_ctrl_c_once_starts_no_new_run_and_records_the_running_one(tmp_path, no_
                                                 'cat': 'stopped'}
     assert record.load(runs[0].record)['verdict'] == 'passed'
     assert not os.path.exists(runs[1].record)
-    assert progress.said == ['Ctrl-C: no new run starts; the 1 running finish and are '
-                             'recorded (Ctrl-C again: stop them now)']
+    assert progress.said == ['Ctrl-C: no new run starts; the running ones (1) finish and '
+                             'are recorded (Ctrl-C again: stop them now)']
 
 
 def test_ctrl_c_twice_stops_the_running_ones_and_keeps_no_record_of_them(tmp_path, no_wait):
@@ -136,8 +136,8 @@ def test_ctrl_c_twice_stops_the_running_ones_and_keeps_no_record_of_them(tmp_pat
     progress = Progress(cluster, stopping, at=[1, 1])
     stopped = dispatch.grade(runs, cluster, progress, None, stopping)
     assert cluster.stopped_now and [r.label for r in stopped] == ['ann', 'ben', 'cat']
-    assert not any(os.path.exists(r.record) and os.listdir(r.record) for r in runs)
-    assert progress.said == ['stopping the 2 running runs now']
+    assert not any(os.path.exists(r.dir) for r in runs)
+    assert progress.said == ['Ctrl-C again: stopping the running ones (2) now']
     # cat never started; ann ended at once (cancelled: no record), ben not in time
     assert [f.label for f in cluster.cancelled] == ['cat', 'ben']
 

@@ -5,6 +5,8 @@ unpacked with the teacher's part of its record, or lost; a run whose checks
 failed in a release it was not told run again in the next; a run a
 resumed grading keeps (run.resume) not sent at all; Ctrl-C (run.stopping).
 """
+import shutil
+
 from exp_assignment2.grading import record
 from exp_assignment2.grading.plan.spec import RunSpec
 from exp_assignment2.grading.run import tasks
@@ -89,6 +91,7 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None):
         start(run)
     if resume is not None:
         resume.say()
+    progress.total = len(todo)
     noticed = 0
     try:
         while pending:
@@ -99,10 +102,11 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None):
                         futures[future].state = 'stopped'
                 noticed = stopping.asked
                 if noticed == NO_NEW:
-                    progress.line('Ctrl-C: no new run starts; the %d running finish and are '
-                                  'recorded (Ctrl-C again: stop them now)' % len(pending))
+                    progress.line('Ctrl-C: no new run starts; the running ones (%d) finish '
+                                  'and are recorded (Ctrl-C again: stop them now)' % len(pending))
                 else:
-                    progress.line('stopping the %d running runs now' % len(pending))
+                    progress.line('Ctrl-C again: stopping the running ones (%d) now'
+                                  % len(pending))
                     cluster.stop_now()
                     _received_in_time(pending, futures, cluster, receive)
                     break
@@ -120,7 +124,8 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None):
                 wait(list(pending), timeout=0.5, return_when='FIRST_COMPLETED')
             except TimeoutError:
                 pass
-        progress.show(todo)
+        if todo:
+            progress.show(todo)
     except KeyboardInterrupt:       # a third Ctrl-C, or the grader's own end
         progress.line('ending every run')
         cluster.cancel(pending)
@@ -149,6 +154,7 @@ def _received(run, future, cluster):
                 grader_fault=record.fault('failed with this run', exc))
     if (run.result or {}).get('ended_by') == 'cancelled':
         record.unfinish(run.record)         # stopped half way: run again by a resume
+        shutil.rmtree(run.dir, ignore_errors=True)
         run.result, run.state = None, 'stopped'
 
 
