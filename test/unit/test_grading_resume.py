@@ -154,6 +154,10 @@ def test_what_is_not_finished_or_not_the_students_runs_again(tmp_path):
     os.makedirs(os.path.join(run_dir, 'record'))
     assert resume_.why_again(run_dir, dict(mine, verdict='passed'), planned) == \
         'its directory is not whole'      # its events and logs are not there
+    cut = dict(mine, verdict='passed', teacher=dict(mine['teacher'], cut=[
+        'record/events.jsonl (9 bytes): over the 64 MB a run sends back',
+        'work/logs/build.log (9 bytes): over the 64 MB a run sends back']))
+    assert resume_.why_again(run_dir, cut, planned) is None     # not sent back: not missing
     open(os.path.join(run_dir, 'record', 'events.jsonl'), 'w').close()
     os.makedirs(os.path.join(run_dir, 'work', 'logs'))
     assert resume_.why_again(run_dir, dict(mine, verdict='passed'), planned) is None

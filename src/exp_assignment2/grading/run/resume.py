@@ -98,11 +98,14 @@ def _differs(then, now):
 
 def whole(run_dir, run):
     """The run's directory holds what its record says it has: the driver's
-    events, and the logs of a run that was built."""
-    if run.get('events') and not os.path.isfile(os.path.join(run_dir, 'record',
-                                                             'events.jsonl')):
+    events, and the logs of a run that was built (unless its worker did not
+    send them back: the teacher's part says what was cut)."""
+    cut = ' '.join(record.teacher(run, 'cut'))
+    if run.get('events') and 'record/events.jsonl' not in cut and \
+            not os.path.isfile(os.path.join(run_dir, 'record', 'events.jsonl')):
         return False
-    return not run.get('build') or os.path.isdir(os.path.join(run_dir, 'work', 'logs'))
+    return not run.get('build') or 'work/logs/' in cut or \
+        os.path.isdir(os.path.join(run_dir, 'work', 'logs'))
 
 
 def why_again(run_dir, old, planned):
