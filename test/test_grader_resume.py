@@ -1,6 +1,7 @@
 """A teacher's grading stopped and started again, and graded again with
 another profile, end to end (``bash tools/run grade`` on a small folder of
-its own: the dog that works, one that idles, one whose C++ does not build,
+its own: the dog that works, one whose dog dies with a traceback, one whose
+C++ does not build,
 20 simulated s at twice real time, one run at a time).
 
 - killed with SIGKILL half way (the teacher's process and all it started),
@@ -34,7 +35,7 @@ import grading_fixtures  # noqa: E402
 
 pytestmark = pytest.mark.xdist_group('grader_resume')
 GRADE = ['bash', os.path.join(REPO, 'tools', 'run'), 'grade']
-NAMES = ['works', 'idle', 'cpp_broken']
+NAMES = ['works', 'raises', 'cpp_broken']
 FAST = ['--duration', '20', '--real-time-factor', '2', '--jobs', '1']
 CGROUPS = ('/sys/fs/cgroup/pids', '/sys/fs/cgroup/memory')
 
@@ -146,7 +147,7 @@ def test_a_grading_killed_half_way_and_resumed_is_the_uninterrupted_one(folder, 
 
 def test_ctrl_c_once_lets_the_running_run_finish_and_starts_no_other(folder):
     out = str(folder['base'] / 'once')
-    teacher = start(folder, out, '--only', 'works', 'idle')
+    teacher = start(folder, out, '--only', 'works', 'raises')
     wait_for(lambda: sandboxes(out), 600)
     time.sleep(2)
     teacher.send_signal(signal.SIGINT)
@@ -165,7 +166,7 @@ def test_ctrl_c_once_lets_the_running_run_finish_and_starts_no_other(folder):
 
 def test_ctrl_c_twice_stops_the_running_run_now(folder):
     out = str(folder['base'] / 'twice')
-    teacher = start(folder, out, '--only', 'works', 'idle')
+    teacher = start(folder, out, '--only', 'works', 'raises')
     wait_for(lambda: sandboxes(out), 600)
     time.sleep(2)
     pids = group_of(teacher.pid)
@@ -206,9 +207,17 @@ def test_a_regrade_with_a_threshold_raised_lists_whose_marks_changed(folder, who
     # the runs' own records are as their workers wrote them
     with open(os.path.join(out, 'runs', 'works', 'record', 'run.json')) as f:
         assert json.load(f)['verdict'] == 'passed'
-    # judged again with the first profile: the marks it published come back
+    # judged again with the first profile: the marks it published come back, and
+    # every run is judged as its worker judged it
     proc = grade(folder, out, '--report-only', timeout=300)
     assert proc.returncode == 0, proc.stdout[-3000:]
     assert marks(out) == marks(whole)
+    with open(os.path.join(out, 'report.json')) as f:
+        for run in json.load(f)['runs']:
+            with open(os.path.join(out, 'runs', run['label'], 'record', 'run.json')) as g:
+                recorded = json.load(g)
+            for key in ('verdict', 'reason', 'checks', 'errors', 'died', 'launch_errors',
+                        'roles'):
+                assert run.get(key) == recorded.get(key), (run['label'], key)
     assert sorted(os.listdir(os.path.join(out, 'published'))) == ['001.json', '002.json',
                                                                   '003.json']
