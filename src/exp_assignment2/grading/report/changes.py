@@ -148,6 +148,10 @@ def _count(entry):
     return sum(r['change'] == 'mark' for r in rows), len(rows)
 
 
+def _marks(count):
+    return '%d mark%s' % (count, '' if count == 1 else 's')
+
+
 def _score(value):
     return '' if value is None else '%g' % value
 
@@ -171,12 +175,12 @@ def _page(entries):
         parts.append('<p>The first report: nothing to compare with.</p>')
     else:
         before = next((e for e in entries if e['number'] == last['previous']), None)
-        parts.append('<p>Report %d (%s, profile %s) against report %d%s: %d marks changed. '
+        parts.append('<p>Report %d (%s, profile %s) against report %d%s: %s changed. '
                      'Also in <a href="changes.csv">changes.csv</a>.</p>' % (
                          last['number'], _e(_when(last['at'])), _e(last['profile']),
                          last['previous'], ' (%s, profile %s)' % (
                              _e(_when(before['at'])), _e(before['profile'])) if before else '',
-                         _count(last)[0]))
+                         _marks(_count(last)[0])))
         parts.append('<table><tr>%s</tr>' % ''.join('<th>%s</th>' % _e(c) for c in COLUMNS))
         for row in last['changes']:
             parts.append('<tr><td><a href="pages/%s.html">%s</a></td><td>%s</td><td>%s</td>'
@@ -207,9 +211,9 @@ def index_line(report_dir):
         return ''
     last = entries[-1]
     marks, rows = _count(last)
-    return ('<p class="changes"><a href="changes.html"><b>%d mark%s changed</b></a> since '
+    return ('<p class="changes"><a href="changes.html"><b>%s changed</b></a> since '
             'the report of %s%s%s.</p>' % (
-                marks, '' if marks == 1 else 's', _e(_when(
+                _marks(marks), _e(_when(
                     next((e['at'] for e in entries if e['number'] == last['previous']),
                          last['at']))),
                 '' if rows == marks else ' (and %d other change%s: checks, new or gone '
@@ -223,6 +227,6 @@ def terminal_line(report_dir):
     if not entries or entries[-1]['previous'] is None:
         return ''
     marks, rows = _count(entries[-1])
-    return '%d mark%s changed since the report before (report %d against %d): %s' % (
-        marks, '' if marks == 1 else 's', entries[-1]['number'], entries[-1]['previous'],
+    return '%s changed since the report before (report %d against %d): %s' % (
+        _marks(marks), entries[-1]['number'], entries[-1]['previous'],
         os.path.join(report_dir, 'changes.html'))
