@@ -100,6 +100,7 @@ def print_cpu(runs, jobs, profile):
 
 
 def grade(folder, out, jobs, duration, rtf, scheduler=None):
+    shutil.rmtree(out, ignore_errors=True)      # from nothing: grade keeps the runs there
     started = time.monotonic()
     where = ['--scheduler', scheduler] if scheduler else ['--jobs', str(jobs)] if jobs else []
     proc = subprocess.run([sys.executable, os.path.join(REPO, 'scripts', 'grade.py'), folder,

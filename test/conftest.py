@@ -31,8 +31,8 @@ from grading_run import graded  # noqa: E402,F401  (the grader tests' one gradin
 # tests go first, so that no worker is left with one of them at the end.
 SLOW_FIRST = ('test_grader.py', 'test_grader_roles.py', 'test_grader_shapes.py',
               'test_grader_releases.py', 'test_grader_starts.py', 'test_grader_py2.py',
-              'test_grader_dask.py', 'test_grader_git.py', 'test_install_space.py',
-              'test_overlay.py',
+              'test_grader_dask.py', 'test_grader_resume.py', 'test_grader_git.py',
+              'test_install_space.py', 'test_overlay.py',
               'test_student_package.py',
               'test_rostests.py',
               'test_launch_args.py', 'test_original_env_tabs.py')

@@ -6,7 +6,9 @@ those), the runs are spread over both workers, a worker killed with SIGKILL
 in the middle of a run has that run done again by the other (and the report
 says so), a worker that claims another package version is refused with both
 versions named, an unreachable scheduler is one line in under 10 s, and
-Ctrl-C on the teacher's side leaves no run behind on the workers.
+Ctrl-C on the teacher's side lets the running runs finish and records
+them, and twice, or the teacher's process killed, leaves no run behind on
+the workers.
 """
 import json
 import os
@@ -183,21 +185,58 @@ def test_an_unreachable_scheduler_is_one_line_fast(tmp_path):
     assert len(lines) == 1 and 'cannot reach the Dask scheduler at tcp://127.0.0.1:' in lines[0]
 
 
-def test_ctrl_c_leaves_no_run_behind(cluster):
-    out = str(cluster['base'] / 'interrupted')
+def _teacher(cluster, out, duration):
+    """The teacher's grade of works and idle, once a run is going on a worker."""
     teacher = subprocess.Popen(['/usr/bin/python3', os.path.join(REPO, 'scripts', 'grade.py'),
                                 cluster['folder'], '--out', out, '--scheduler',
-                                cluster['address'], '--duration', '60', '--only', 'works',
+                                cluster['address'], '--duration', duration, '--only', 'works',
                                 'idle'], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                universal_newlines=True)
     deadline = time.monotonic() + 300
     while not any(sandboxes_of(w.pid) for w in cluster['workers']):
         assert time.monotonic() < deadline, 'no run started'
         time.sleep(0.5)
+    return teacher
+
+
+def test_ctrl_c_once_lets_the_running_runs_finish_and_records_them(cluster):
+    out = str(cluster['base'] / 'interrupted-once')
+    teacher = _teacher(cluster, out, '25')
+    teacher.send_signal(signal.SIGINT)
+    output, _ = teacher.communicate(timeout=300)
+    assert teacher.returncode == 130, output[-2000:]
+    assert 'Ctrl-C: no new run starts' in output
+    recorded = [name for name in ('works', 'idle')
+                if os.path.exists(os.path.join(out, 'runs', name, 'record', 'run.json'))]
+    assert recorded, output[-2000:]
+    for name in recorded:
+        run, _ = records(out, name)
+        assert run['ended_by'] == 'duration' and run['verdict'] == \
+            grading_fixtures.EXPECTED[name]
+
+
+def test_ctrl_c_twice_leaves_no_run_behind(cluster):
+    out = str(cluster['base'] / 'interrupted')
+    teacher = _teacher(cluster, out, '60')
+    teacher.send_signal(signal.SIGINT)
+    time.sleep(1)
     teacher.send_signal(signal.SIGINT)
     output, _ = teacher.communicate(timeout=60)
     assert teacher.returncode == 130, output[-2000:]
+    assert not os.path.exists(os.path.join(out, 'runs', 'works', 'record', 'run.json'))
     deadline = time.monotonic() + 20
+    while any(sandboxes_of(w.pid) for w in cluster['workers']):
+        assert time.monotonic() < deadline, 'a run is still going on a worker'
+        time.sleep(0.5)
+
+
+def test_a_teacher_killed_leaves_no_run_behind_on_the_workers(cluster):
+    """The scheduler releases what a client that is gone wanted: a worker
+    ends the run its teacher's side no longer wants."""
+    teacher = _teacher(cluster, str(cluster['base'] / 'teacher-killed'), '60')
+    teacher.kill()
+    teacher.wait()
+    deadline = time.monotonic() + 30
     while any(sandboxes_of(w.pid) for w in cluster['workers']):
         assert time.monotonic() < deadline, 'a run is still going on a worker'
         time.sleep(0.5)

@@ -88,8 +88,18 @@ def test_a_failed_build_ends_the_run_at_once_without_asking(tmp_path):
     assert result['sandbox_exit'] != 0 and took < 30       # killed, not waited for
 
 
-def test_a_cancelled_run_asks_the_driver_to_stop_and_waits_for_it(tmp_path):
-    result, took = watched(tmp_path, BUILT % 0 + STOPS, cancel=True)
-    assert result['ended_by'] == 'cancelled' and result['ended_at'] == 0.0
+def test_a_cancelled_run_is_killed_at_once_without_asking(tmp_path):
+    """Ctrl-C twice: the teacher wants the runs stopped now (their records are not kept)."""
+    result, took = watched(tmp_path, BUILT % 0 + 'import time\ntime.sleep(60)\n', cancel=True)
+    assert result['ended_by'] == 'cancelled' and 'cpu_s' not in result
+    assert result['sandbox_exit'] != 0 and took < 30       # killed, not waited for
+
+
+def test_a_run_asked_to_stop_waits_for_its_driver(tmp_path, monkeypatch):
+    """Any other end asks the driver to end its commands, and waits for it."""
+    from exp_assignment2.grading.run import ending
+    monkeypatch.setattr(ending, 'end_reason', lambda facts, now: 'duration')
+    result, took = watched(tmp_path, BUILT % 0 + STOPS)
+    assert result['ended_by'] == 'duration' and result['ended_at'] == 0.0
     assert 'cpu_s' in result and result['sandbox_exit'] == 0     # it ended by itself
     assert [e['event'] for e in result['events']] == ['built', 'stopping'] and took < 30

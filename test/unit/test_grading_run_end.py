@@ -79,8 +79,9 @@ def test_the_order_is_the_precedence():
 
 def test_every_reason_is_listed_and_those_at_once_first():
     """REASONS is the module's list, in its order; the driver is asked to end
-    its commands for all but the first two, and has STOP_GRACE s to."""
-    assert REASONS[:2] == AT_ONCE == ('driver_exit', 'build_failed')
+    its commands for all but the first three, and has STOP_GRACE s to (a
+    cancelled run is stopped now: the teacher pressed Ctrl-C twice)."""
+    assert REASONS[:3] == AT_ONCE == ('driver_exit', 'build_failed', 'cancelled')
     assert len(set(REASONS)) == 10 and NOT_RUN not in REASONS
     import exp_assignment2.grading.run.ending as ending
     listed = [line.split('``')[1] for line in ending.__doc__.splitlines()

@@ -10,16 +10,18 @@ every submission of a folder built, run in its sandbox and judged; one report.
 import argparse
 import multiprocessing
 import os
-import signal
 import sys
 
 from exp_assignment2.grading.plan import planning
 from exp_assignment2.grading.plan import profiles
 from exp_assignment2.grading.report import gradebook
 from exp_assignment2.grading.report import index as report
+from exp_assignment2.grading.report import resumed as report_resumed
 from exp_assignment2.grading.run import tasks
 from exp_assignment2.grading.run.cluster import Cluster, ClusterError
 from exp_assignment2.grading.run.dispatch import grade
+from exp_assignment2.grading.run.resume import Resume
+from exp_assignment2.grading.run.stopping import Stopping
 from exp_assignment2.grading.plan.commands import TeacherFileError
 from exp_assignment2.grading.plan.copies import Copies
 from exp_assignment2.grading.progress import Progress
@@ -28,10 +30,6 @@ from exp_assignment2.grading.plan.submissions import SubmissionError
 
 # 4: the report is written, but some runs could not be graded (grader_error: run them again)
 EXIT_OK, EXIT_USAGE, EXIT_CLUSTER, EXIT_NOT_ALL_GRADED = 0, 2, 3, 4
-
-
-def _interrupt(*_):
-    raise KeyboardInterrupt()
 
 
 def parse_args(argv):
@@ -57,7 +55,9 @@ def parse_args(argv):
                         help='run on the workers of this Dask scheduler (tools/run grade-worker)'
                         ' instead of this machine alone')
     parser.add_argument('--report-only', action='store_true',
-                        help='make the report again from the runs already in --out')
+                        help='make the report again from the runs already in --out, each '
+                        'judged again with the profile (a changed threshold: whose marks '
+                        'changed, in changes.html)')
     parser.add_argument('--deadline', metavar='TIME',
                         help='a git repository is graded at its last commit before TIME (ISO '
                         '8601: 2025-03-01T23:59, local time unless +01:00 or Z; default: '
@@ -136,13 +136,8 @@ def main(argv=None):
     try:
         # the profile by the one precedence: --profile, grading.yaml's, dog
         read = planning.read_settings(args)
-        profile = read[1]['profile']
         if args.report_only:
-            summaries = report.write(out, profile, teacher=read[0])
-            if gradebook.missing_line(summaries, read[0]):
-                log(gradebook.missing_line(summaries, read[0]))
-            log(summary_line(summaries, out))
-            return EXIT_OK
+            return report_only(out, read, log)
         _outside(os.path.abspath(args.submissions), out)
         submissions = planning.entries(args, log)
     except (profiles.ProfileError, TeacherFileError, SubmissionError) as exc:
@@ -173,18 +168,27 @@ def _grade(args, out, log, read, submissions, copies):
            'on the workers of ' + args.scheduler if args.scheduler else '%d at once' % jobs,
            runs[0].settings.duration, profile['name'], out))
     progress = Progress(len(runs), jobs, extra=lambda: '%d workers' % cluster.worker_count())
-    previous = signal.getsignal(signal.SIGTERM)
-    signal.signal(signal.SIGTERM, _interrupt)
-    try:
-        grade(runs, cluster, progress, copies)
-    except KeyboardInterrupt:
-        log('stopped: the report holds the runs that ended')
+    resume = Resume(os.path.join(out, 'runs'), copies, log)
+    with Stopping() as stopping:
+        try:
+            stopped = grade(runs, cluster, progress, copies, stopping, resume)
+        except KeyboardInterrupt:
+            stopped = [r for r in runs if r.state != 'done']
+            stopping.asked = stopping.asked or 1
+        finally:
+            progress.close()
+            cluster.close()
+    if stopping.asked:
+        report_resumed.write(out, resume.summary(runs, stopped))
+        log('stopped: the report holds the runs that ended; %d not run: grade again with the '
+            'same --out to run them (the others are kept)' % len(stopped))
         report.write(out, profile, teacher=read[0])
         return 130
-    finally:
-        signal.signal(signal.SIGTERM, previous)
-        progress.close()
-        cluster.close()
+    dropped = resume.drop_others(runs)
+    if dropped:
+        log('taken away: %d runs of an earlier plan of these submissions (%s)'
+            % (len(dropped), ', '.join(dropped)))
+    report_resumed.write(out, resume.summary(runs, []))
     if len({r.spec.name for r in runs}) > 1:    # read by the index, written next
         try:
             similarity_step(args, out, log, read, submissions, copies)
@@ -202,6 +206,29 @@ def _grade(args, out, log, read, submissions, copies):
         log('not graded, through a fault of the grader\'s (grade them again with --only): %s'
             % ' '.join(ungraded))
         return EXIT_NOT_ALL_GRADED
+    return EXIT_OK
+
+
+def report_only(out, read, log):
+    """``--report-only``: every run of ``out`` judged again from its records
+    with the profile chosen (and grading.yaml's roles of each submission),
+    nothing run; the report written, with what changed (report.changes)."""
+    from exp_assignment2.grading.judge import again
+    from exp_assignment2.grading.report import changes
+    teacher, chosen, _ = read
+    profile, own = chosen['profile'], teacher.get('submissions') or {}
+    runs_dir = os.path.join(out, 'runs')
+    judged = again.all_rejudged(runs_dir, report.load_runs(runs_dir), lambda name: (
+        profiles.with_teacher_roles(profile, (own.get(name) or {}).get('roles'))))
+    summaries = report.write(out, profile, runs=judged, teacher=teacher)
+    log('judged %d runs again from their records, with profile %s' % (len(judged),
+                                                                      profile['name']))
+    if gradebook.missing_line(summaries, teacher):
+        log(gradebook.missing_line(summaries, teacher))
+    said = changes.terminal_line(out)
+    if said:
+        log(said)
+    log(summary_line(summaries, out))
     return EXIT_OK
 
 

@@ -12,6 +12,13 @@ the teacher's side's, made once). What the teacher's side adds once a
 worker's run came back is its own part, :data:`TEACHER_FIELDS`, kept in
 ``teacher.json`` beside ``run.json`` and read as the record's ``teacher``:
 the worker's fields are never written again.
+
+A run is *finished* when its ``run.json`` is there (:func:`load` reads it,
+with a verdict): :func:`write` puts it last, after ``teacher.json``, and a
+run's directory holds its logs and frames before it is written; a new
+attempt over a run's directory first takes it away (:func:`unfinish`). So a
+kill at any moment leaves a whole record or none, and ``grade`` started again
+keeps only whole ones (:mod:`~exp_assignment2.grading.run.resume`).
 """
 import json
 import os
@@ -26,6 +33,7 @@ FIELDS = (
     ('seed', "the run's seed"),
     ('version', 'the package version of the grader that ran it'),
     ('profile', "the profile's name"),
+    ('run_id', "this attempt's id (a uuid): a run kept by a resumed grading keeps it"),
     # what was asked (plan.spec.RunSpec's, as planned)
     ('commands', 'what the run starts, exactly'),
     ('commands_from', 'where they came from: grading.yaml, the README, the profile'),
@@ -89,6 +97,9 @@ TEACHER_FIELDS = (
     ('workers', 'the workers that ran it, in order (more than one: run again)'),
     ('notes', "the teacher's side's notes (a run done again after its worker was lost)"),
     ('cut', 'what its worker did not send back whole'),
+    ('planned', "what the teacher's side planned it from: {'spec': the digest of its RunSpec, "
+                "'content': of its submission's files, 'spec_fields': the RunSpec's fields} "
+                '(run.resume: a grading started again keeps it only when they are the same)'),
 )
 # what an older grader wrote among the run's own fields
 _FORMERLY_OWN = ('workers', 'cut')
@@ -140,27 +151,53 @@ class RunRecord(dict):
 def _put(path, text):
     with open(path + '.tmp', 'w') as f:
         f.write(text)
+        f.flush()
+        os.fsync(f.fileno())            # on disk before its name says it is there
     os.replace(path + '.tmp', path)      # a reader never sees half of one
 
 
 def write(record_dir, record=None, teacher=None):
-    """The one writer: ``record`` (a RunRecord, or a dict of its fields) as
+    """The one writer: ``record`` (a RunRecord, or a dict of its fields, or
+    the bytes of a worker's run.json, kept byte for byte) as
     ``record_dir/run.json``, and the teacher's part (``teacher``, a dict of
     TEACHER_FIELDS, or the record's own ``teacher``) as ``teacher.json``
-    beside it, added without writing the run's fields again; the record as
-    it now is."""
+    beside it, added without writing the run's fields again; run.json last
+    (its presence says the run is finished); the record as it now is."""
     os.makedirs(record_dir, exist_ok=True)
-    if record is not None:
+    text = None
+    if isinstance(record, bytes):       # as its worker wrote it: checked, never rewritten
+        try:
+            data = json.loads(record.decode('utf-8'))
+            RunRecord(data)
+        except (ValueError, TypeError) as exc:
+            raise ValueError('record.write: not a run record: %s' % exc)
+        if 'teacher' in data:
+            raise ValueError('record.write: a worker\'s record holds no teacher\'s part')
+        text = record.decode('utf-8')
+    elif record is not None:
         record = RunRecord(record)
         own = record.pop('teacher', None)
         if own is not None and teacher is not None:
             raise TypeError('record.write: the teacher\'s part given twice')
         teacher = own if own is not None else teacher
-        _put(os.path.join(record_dir, NAME), record.to_json())
+        text = record.to_json()
     if teacher is not None:
         _check('teacher', teacher)
         _put(os.path.join(record_dir, TEACHER_NAME), json.dumps(teacher, indent=1, default=str))
+    if text is not None:
+        _put(os.path.join(record_dir, NAME), text)
     return load(record_dir)
+
+
+def unfinish(record_dir):
+    """A new attempt starts over the run's directory: its record goes first
+    (run.json, then the teacher's part), so that no record is left beside
+    the logs and frames of another attempt."""
+    for name in (NAME, TEACHER_NAME):
+        try:
+            os.unlink(os.path.join(record_dir, name))
+        except FileNotFoundError:
+            pass
 
 
 def _read(path):

@@ -133,6 +133,21 @@ def keyboard_waits(run_logs, names):
     return found
 
 
+def in_run(path, work):
+    """``path`` (the build's, where the run was: a worker's scratch directory,
+    or the report's copy judged again) as the report names it: from the
+    submission's root, else from the run's directory."""
+    marker = '/runs/%s/work/' % os.path.basename(os.path.dirname(work))
+    at = path.find(marker)
+    if path.startswith(work.rstrip('/') + '/'):
+        rest = path[len(work.rstrip('/')) + 1:]
+    elif at >= 0:
+        rest = path[at + len(marker):]
+    else:
+        return path
+    return rest[len('src/'):] if rest.startswith('src/') else 'work/' + rest
+
+
 def told(result):
     """The :class:`Seen` of a run whose record says itself how it ended before
     or outside its run (:data:`TOLD`), read from nothing else; else None."""
@@ -158,9 +173,7 @@ def gather(work, record_dir, result, profile):
     build_log = logs_.read_log(work, 'logs/build.log', {})
     error = dict(built.get('error') or {}) if built else None
     if error and error.get('file'):        # as the report has paths: the package's own
-        package = os.path.join(work, 'src') + '/'
-        error['file'] = error['file'].replace(package, '').replace(
-            os.path.dirname(work) + '/', '')
+        error['file'] = in_run(error['file'], work)
     seen = Seen(built=built is not None, build_rc=built.get('rc') if built else None,
                 build_error=error, build_log_line=logs_.last_line(build_log),
                 ended_by=result.get('ended_by'), sandbox_exit=result.get('sandbox_exit'),

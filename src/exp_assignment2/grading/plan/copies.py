@@ -13,8 +13,8 @@ maybe).
 """
 import os
 import shutil
-import tempfile
 
+from exp_assignment2.grading import scratch as grader_scratch
 from exp_assignment2.grading.plan.unpacking import SubmissionError, unpack
 
 
@@ -41,7 +41,7 @@ class Copies(object):
     removed by :meth:`close` (or at the end of a ``with``)."""
 
     def __init__(self, scratch_root=None):
-        self.scratch = tempfile.mkdtemp(prefix='exp2-teacher-', dir=scratch_root)
+        self.scratch = grader_scratch.make('teacher', scratch_root)
         self._made = {}       # the submission's path -> its Copy
 
     def of(self, submission):

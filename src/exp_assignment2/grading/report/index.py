@@ -18,6 +18,7 @@ import statistics
 
 from exp_assignment2.grading import record
 from exp_assignment2.grading.judge.verdicts import VERDICTS
+from exp_assignment2.grading.report import changes as report_changes
 from exp_assignment2.grading.report import commits as report_commits
 from exp_assignment2.grading.report import feedback
 from exp_assignment2.grading.report import gradebook
@@ -26,6 +27,7 @@ from exp_assignment2.grading.report import judged as report_judged
 from exp_assignment2.grading.report import marks as report_marks
 from exp_assignment2.grading.report import pages as teacher_pages
 from exp_assignment2.grading.report import releases as report_releases
+from exp_assignment2.grading.report import resumed as report_resumed
 from exp_assignment2.grading.report.html import IMAGES_JS, e as _e, figure, head
 from exp_assignment2.grading.similarity import page as similarity_page
 
@@ -84,8 +86,9 @@ def summarise(runs):
     return out
 
 
-def _index(summaries, pictures, profile, title, similar=None):
-    """index.html's text; ``similar``: similarity.json's tops (its column), or None."""
+def _index(summaries, pictures, profile, title, similar=None, top=()):
+    """index.html's text; ``similar``: similarity.json's tops (its column), or None;
+    ``top``: [HTML] said first (the marks changed, a resumed or stopped grading)."""
     check_names = [c['name'] for c in profile['checks']]
     counts = collections.Counter(s['verdict'] for s in summaries.values())
     parts = [head(title, teacher_pages.STYLE, SORT_JS + IMAGES_JS),
@@ -93,7 +96,7 @@ def _index(summaries, pictures, profile, title, similar=None):
                  _e(title), similarity_page.INDEX_LINK if similar is not None else '',
                  len(summaries),
                  ', '.join('%d %s' % (counts[v], v) for v in VERDICTS if counts[v])),
-             report_marks.histogram_svg(summaries),
+             ''.join(top), report_marks.histogram_svg(summaries),
              '<table><thead><tr><th onclick="sortBy(this)">submission</th>%s'
              '<th onclick="sortBy(this)">score</th><th onclick="sortBy(this)">verdict</th>'
              % (similarity_page.INDEX_HEADING if similar is not None else '')]
@@ -124,9 +127,10 @@ def _index(summaries, pictures, profile, title, similar=None):
     return ''.join(parts)
 
 
-def _summaries(report_dir, profile):
-    """(every run's record, the runs that count, {name: summary}) of ``report_dir/runs``."""
-    every = load_runs(os.path.join(report_dir, 'runs'))
+def _summaries(report_dir, profile, every=None):
+    """(every run's record, the runs that count, {name: summary}) of
+    ``report_dir/runs`` (``every``: their records, judged again)."""
+    every = load_runs(os.path.join(report_dir, 'runs')) if every is None else every
     runs, tried = report_releases.counted(every, profile)   # in several releases: the better
     summaries = report_marks.add_scores(summarise(runs), runs, profile)
     report_commits.apply_late(summaries, runs)      # a late commit graded on purpose
@@ -139,14 +143,19 @@ def _write_index(report_dir, summaries, pictures, profile, title):
     """index.html, once, with the similarity column when a similarity report is there."""
     title = title or 'Grading: %s' % (profile.get('title') or profile['name'])
     with open(os.path.join(report_dir, 'index.html'), 'w') as f:
-        f.write(_index(summaries, pictures, profile, title, similarity_page.tops(report_dir)))
+        f.write(_index(summaries, pictures, profile, title, similarity_page.tops(report_dir),
+                       [report_changes.index_line(report_dir)] +
+                       report_resumed.paragraph(report_dir)))
 
 
-def write(report_dir, profile, title=None, teacher=None):
-    """Make the report from ``report_dir/runs``; returns the summaries.
-    ``teacher``: grading.yaml's settings (the gradebooks' identifiers)."""
+def write(report_dir, profile, title=None, teacher=None, runs=None):
+    """Make the report from ``report_dir/runs`` (``runs``: their records,
+    judged again: judge.again); returns the summaries. ``teacher``:
+    grading.yaml's settings (the gradebooks' identifiers). The marks it
+    publishes are kept beside the earlier ones (report.changes)."""
     runs_dir = os.path.join(report_dir, 'runs')
-    every, runs, summaries = _summaries(report_dir, profile)
+    every, runs, summaries = _summaries(report_dir, profile, runs)
+    report_changes.publish(report_dir, summaries, profile)
     pages = os.path.join(report_dir, 'pages')
     img_dir = os.path.join(pages, 'img')
     shutil.rmtree(pages, ignore_errors=True)

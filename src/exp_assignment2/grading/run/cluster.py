@@ -15,6 +15,7 @@ worker started with ``--resources runs=K`` takes at most K runs at once.
 * Ctrl-C (or SIGTERM) sets a Dask event that every running task polls: its
   run is ended at once (its sandbox killed), and the futures are cancelled.
 """
+import shutil
 import socket
 import time
 import uuid
@@ -26,6 +27,8 @@ from exp_assignment2.grading.run import ending
 from exp_assignment2.grading.run import tasks
 
 CONNECT_TIMEOUT = 5.0          # s to reach a scheduler, then one line
+# the grading's Dask names, each with the grading's token
+STOP, NO_NEW, STARTS = 'exp2-grade-stop-', 'exp2-grade-no-new-', 'exp2-grade-starts-'
 
 
 class ClusterError(Exception):
@@ -48,15 +51,30 @@ def _remote_version():
     return tasks.package_version()
 
 
-def _task(payload, data, stop_name, starts_name):
-    """What a worker runs: announce the start, run, watch for the teacher's stop."""
+def _wanted(worker, key):
+    """The teacher's side still wants the task: it neither cancelled it nor
+    went away (killed: the scheduler then releases its tasks, and the worker
+    marks the one it runs cancelled)."""
+    state = getattr(worker, 'state', worker)
+    task = getattr(state, 'tasks', {}).get(key) if key else True
+    return task is True or (task is not None and
+                            task.state not in ('cancelled', 'released', 'forgotten'))
+
+
+def _task(payload, data, token):
+    """What a worker runs: announce the start; none once the teacher said no
+    new run starts (Ctrl-C once); else run, until the teacher's stop (Ctrl-C
+    twice) or until the teacher's side no longer wants it."""
     from distributed import Event, Queue, get_worker
     payload = dict(payload, data=data)
     worker = get_worker()
-    Queue(starts_name).put({'label': payload['label'], 'worker': worker.address,
-                            'time': time.time()})
-    stop = Event(stop_name)
-    return tasks.run_task(payload, stop=lambda: stop.wait(1.0))
+    key = getattr(worker, 'get_current_task', lambda: None)()
+    Queue(STARTS + token).put({'label': payload['label'], 'worker': worker.address,
+                               'time': time.time()})
+    if Event(NO_NEW + token).is_set():      # after the announcement: see Cluster.stop_starting
+        return {'skipped': True}
+    stop = Event(STOP + token)
+    return tasks.run_task(payload, stop=lambda: stop.wait(1.0) or not _wanted(worker, key))
 
 
 class Cluster(object):
@@ -85,8 +103,9 @@ class Cluster(object):
             self.client = Client(self.local)
         self.token = uuid.uuid4().hex[:12]
         from distributed import Event, Queue
-        self.stop_event = Event('exp2-grade-stop-' + self.token, client=self.client)
-        self.starts = Queue('exp2-grade-starts-' + self.token, client=self.client)
+        self.stop_event = Event(STOP + self.token, client=self.client)
+        self.no_new = Event(NO_NEW + self.token, client=self.client)
+        self.starts = Queue(STARTS + self.token, client=self.client)
         self.started = {}           # label -> [worker address, ...] (more than one: run again)
         self.version = tasks.package_version()
         self.workers = self._eligible_workers()
@@ -123,8 +142,7 @@ class Cluster(object):
             return self._submit(payload, data)
 
     def _submit(self, payload, data):
-        return self.client.submit(_task, payload, data, 'exp2-grade-stop-' + self.token,
-                                  'exp2-grade-starts-' + self.token, resources={'runs': 1},
+        return self.client.submit(_task, payload, data, self.token, resources={'runs': 1},
                                   pure=False, workers=self.workers,
                                   allow_other_workers=False, key='grade-%s-%s' % (
                                       payload['label'], self.token))
@@ -134,8 +152,26 @@ class Cluster(object):
         for start in self.starts.get(batch=True):      # what is there now, without waiting
             self.started.setdefault(start['label'], []).append(start['worker'])
 
-    def cancel(self, futures):
+    def stop_starting(self, labels):
+        """Ctrl-C once: no run starts from now on; of ``labels`` ({future: its
+        run's label}), the futures of the runs that had not started,
+        cancelled. A task looks at the event after announcing its start: its
+        run was announced before the event was set, and runs on, or it does
+        not run."""
+        self.no_new.set()
+        self.poll_starts()
+        waiting = [f for f, label in labels.items() if label not in self.started]
+        self.client.cancel(waiting)
+        return waiting
+
+    def stop_now(self):
+        """Ctrl-C twice: every running run ends at once, its sandbox killed
+        (each task polls this event); their futures then return."""
+        self.no_new.set()
         self.stop_event.set()
+
+    def cancel(self, futures):
+        self.stop_now()
         self.client.cancel(list(futures))
 
     def close(self):
@@ -155,21 +191,29 @@ def payload(run, version, copies):
             'label': run.label, 'version': version}
 
 
+def _planned(run, teacher):
+    """The teacher's part ``teacher``, with what the run was planned from
+    (run.resume) when the teacher's side said it."""
+    if run.planned is not None:
+        teacher['planned'] = run.planned
+    return teacher
+
+
 def unpack_result(outcome, run, started):
     """The run's directory on the teacher's side as its worker sent it back
     (its record as the worker wrote it), and the teacher's part added beside
     it: the workers that ran it, a note when it was run again, what was cut."""
-    tasks.unpack_run(outcome['archive'], run.dir)
+    own = tasks.unpack_run(outcome['archive'], run.dir)
+    if own is None:
+        raise ValueError('its worker sent back no record')
     workers = started.get(run.label) or []
-    teacher = {'workers': workers}
+    teacher = _planned(run, {'workers': workers})
     if len(workers) > 1:
         teacher['notes'] = ['run again: its worker %s was lost in the middle of the run; '
                             'done on %s' % (', '.join(workers[:-1]), workers[-1])]
     if outcome.get('cut'):
         teacher['cut'] = list(outcome['cut'])
-    result = record.write(run.record, teacher=teacher)
-    if result is None:
-        raise ValueError('its worker sent back no record')
+    result = record.write(run.record, own, teacher=teacher)     # its run.json last
     run.result, run.state = result, 'done'
     return result
 
@@ -185,8 +229,10 @@ def not_run(run, workers=(), **told):
     side: ``told`` is why (one of judge.seen.TOLD: ``refused``, ``rejected``,
     ``lost``, ``grader_fault``), and the verdict table decides on it."""
     spec = run.spec
+    record.unfinish(run.record)     # nothing of an earlier attempt beside this record
+    shutil.rmtree(run.dir, ignore_errors=True)
     result = record.RunRecord.new(
-        spec.name, run.label, run.seed, commands=spec.commands,
+        spec.name, run.label, run.seed, run_id=uuid.uuid4().hex, commands=spec.commands,
         commands_from=spec.commands_from, readme_commands=spec.readme_commands,
         truth={'sim_time': 0.0}, notes=list(spec.notes), duration=spec.duration,
         ended_by=ending.NOT_RUN, **told)
@@ -195,6 +241,6 @@ def not_run(run, workers=(), **told):
     if spec.git:        # the commit a git repository was to be graded at (git_entries.py)
         result['git'] = spec.git
     result.update(verdicts.judge_told(result))
-    result['teacher'] = {'workers': list(workers)}
+    result['teacher'] = _planned(run, {'workers': list(workers)})
     run.result, run.state = record.write(run.record, result), 'done'
     return run.result

@@ -2,13 +2,19 @@
 (no ROS): each run a Dask task, or, when it cannot be sent (refused,
 rejected, not sendable), its record made here; each run that comes back
 unpacked with the teacher's part of its record, or lost; a run whose checks
-failed in a release it was not told run again in the next.
+failed in a release it was not told run again in the next; a run a
+resumed grading keeps (run.resume) not sent at all; Ctrl-C (run.stopping).
 """
+import shutil
+
 from exp_assignment2.grading import record
 from exp_assignment2.grading.plan.spec import RunSpec
 from exp_assignment2.grading.run import tasks
 from exp_assignment2.grading.run.cluster import lost_result, not_run, payload, unpack_result
 from exp_assignment2.grading.run.runner import Run
+from exp_assignment2.grading.run.stopping import NO_NEW, Stopping
+
+STOP_WAIT = 30.0        # s the runs stopped now have to end (their sandboxes killed)
 
 
 def in_next_release(run):
@@ -28,62 +34,143 @@ def in_next_release(run):
     return Run(run.settings, RunSpec.from_dict(data))
 
 
-def grade(runs, cluster, progress, copies):
+def grade(runs, cluster, progress, copies, stopping=None, resume=None):
     """Every Run as a Dask task (its submission packed from its copy in
-    ``copies``); Ctrl-C ends every run (on every worker) and returns."""
-    from concurrent.futures import CancelledError
-    from distributed import KilledWorker, wait
-    version = cluster.version
-    futures = {}
+    ``copies``), but those ``resume`` keeps (run.resume: a finished run of
+    the same plan); ``stopping`` (run.stopping) says when the teacher stops
+    it: once, no new run starts and the running ones are received; twice,
+    they end now and are not kept. Returns the runs not run ([] when the
+    grading went to its end)."""
+    from distributed import wait
+    stopping = stopping or Stopping()
+    futures, todo = {}, []     # future -> its run; the runs run now (the progress line's)
 
     def send(run):
         """The run as a Dask task (its future), or its grader_error (None)."""
         try:
-            future = cluster.submit(payload(run, version, copies))
+            future = cluster.submit(payload(run, cluster.version, copies))
         except Exception as exc:      # noqa: BLE001 -- the grader's fault, this run's only
             not_run(run, grader_fault=record.fault('could not send it to a worker', exc))
             return None
         futures[future] = run
+        pending.add(future)
         return future
-    for run in runs:
+
+    def start(run):
+        """The run kept, or decided here (refused, rejected), or sent."""
+        kept = resume.keep(run) if resume is not None else None
+        if kept is not None:
+            run.result, run.state = kept, 'done'
+            follow(run)
+            return
+        todo.append(run)
         if run.spec.refused:       # the teacher's file is wrong about it, or the grader failed
             not_run(run, refused=run.spec.refused)
         elif run.spec.rejected:    # nothing to run: it does not unpack, it holds no package
             not_run(run, rejected=run.spec.rejected)
         else:
             send(run)
-    pending = set(futures)
+
+    def receive(run, future):
+        _received(run, future, cluster)
+        if run.state == 'done':
+            follow(run)
+
+    def follow(run):
+        """Its checks failed: as its student may have run it, in the next release."""
+        again = in_next_release(run)
+        if again is not None:
+            runs.append(again)
+            if stopping.asked:
+                again.state = 'stopped'
+            else:
+                start(again)
+
+    pending = set()
+    for run in list(runs):
+        start(run)
+    if resume is not None:
+        resume.say()
+    progress.total = len(todo)
+    noticed = 0
     try:
         while pending:
+            if stopping.asked > noticed:
+                if not noticed:         # no new run starts (also before stopping them now)
+                    for future in cluster.stop_starting({f: futures[f].label for f in pending}):
+                        pending.discard(future)
+                        futures[future].state = 'stopped'
+                noticed = stopping.asked
+                if noticed == NO_NEW:
+                    progress.line('Ctrl-C: no new run starts; the running ones (%d) finish '
+                                  'and are recorded (Ctrl-C again: stop them now)' % len(pending))
+                else:
+                    progress.line('Ctrl-C again: stopping the running ones (%d) now'
+                                  % len(pending))
+                    cluster.stop_now()
+                    _received_in_time(pending, futures, cluster, receive)
+                    break
             cluster.poll_starts()
             for future in [f for f in pending if f.done()]:
                 pending.discard(future)
-                run = futures[future]
-                cluster.poll_starts()
-                try:
-                    unpack_result(future.result(), run, cluster.started)
-                except (KilledWorker, CancelledError, tasks.VersionMismatch, OSError,
-                        RuntimeError) as exc:
-                    lost_result(run, exc, cluster.started)
-                except Exception as exc:      # noqa: BLE001 -- this run's grader_error only
-                    not_run(run, cluster.started.get(run.label) or [],
-                            grader_fault=record.fault('failed with this run', exc))
-                again = in_next_release(run)
-                if again is not None:       # its checks failed: as its student may have run it
-                    runs.append(again)
-                    progress.total += 1
-                    pending.update(f for f in [send(again)] if f is not None)
+                receive(futures[future], future)
             for future in pending:
                 run = futures[future]
                 if run.label in cluster.started and run.state == 'waiting':
                     run.state = 'running'
-            progress.show(runs)
+            progress.total = len(todo)
+            progress.show(todo)
             try:        # until a run ends, or half a second for the progress line
                 wait(list(pending), timeout=0.5, return_when='FIRST_COMPLETED')
             except TimeoutError:
                 pass
-        progress.show(runs)
-    except KeyboardInterrupt:
-        progress.line('Ctrl-C: ending every run')
+        if todo:
+            progress.show(todo)
+    except KeyboardInterrupt:       # a third Ctrl-C, or the grader's own end
+        progress.line('ending every run')
         cluster.cancel(pending)
         raise
+    return [run for run in runs if run.state != 'done']
+
+
+def _received(run, future, cluster):
+    """The run as its worker sent it back, recorded on the teacher's side; or
+    its grader_error. A run that did not start (no new run starts) or that
+    was stopped now (its record not kept) is left ``stopped``."""
+    from concurrent.futures import CancelledError
+    from distributed import KilledWorker
+    cluster.poll_starts()
+    try:
+        outcome = future.result()
+        if outcome.get('skipped'):
+            run.state = 'stopped'
+            return
+        unpack_result(outcome, run, cluster.started)
+    except (KilledWorker, CancelledError, tasks.VersionMismatch, OSError,
+            RuntimeError) as exc:
+        lost_result(run, exc, cluster.started)
+    except Exception as exc:      # noqa: BLE001 -- this run's grader_error only
+        not_run(run, cluster.started.get(run.label) or [],
+                grader_fault=record.fault('failed with this run', exc))
+    if (run.result or {}).get('ended_by') == 'cancelled':
+        record.unfinish(run.record)         # stopped half way: run again by a resume
+        shutil.rmtree(run.dir, ignore_errors=True)
+        run.result, run.state = None, 'stopped'
+
+
+def _received_in_time(pending, futures, cluster, receive):
+    """The runs stopped now, waited for until they end (their sandboxes
+    removed), at most STOP_WAIT s; the others' tasks cancelled."""
+    from distributed import wait
+    try:
+        wait(list(pending), timeout=STOP_WAIT)
+    except TimeoutError:
+        pass
+    for future in list(pending):
+        if future.done():
+            pending.discard(future)
+            receive(futures[future], future)
+        else:
+            futures[future].state = 'stopped'
+    cluster.cancel(pending)
+    pending.clear()

@@ -9,7 +9,8 @@ the run, the first of these that holds (their order is the precedence):
    (nothing is left to look at: the verdict tells why, e.g. a build that
    failed, or processes killed from inside the sandbox);
 2. ``build_failed``: the driver said the build failed (nothing was started);
-3. ``cancelled``: the grading was stopped (Ctrl-C, a lost cluster);
+3. ``cancelled``: the teacher stopped the grading now (Ctrl-C twice), or
+   the teacher's side is gone (its Dask client);
 4. ``build_limit``: the build ran past its wall-clock limit;
 5. ``duration``: the simulator reached the run's simulated duration;
 6. ``required_node_died``: roslaunch said ``REQUIRED process [NODE] has
@@ -20,8 +21,9 @@ the run, the first of these that holds (their order is the precedence):
 9. ``no_simulator``: no ground truth came in :attr:`RunFacts.simulator_wait`;
 10. ``disk_limit``: the run's directory went past its limit.
 
-The first two end the run at once (:data:`AT_ONCE`: the driver is gone, or
-nothing was started); for the others the driver is asked to end its
+The first three end the run at once (:data:`AT_ONCE`: the driver is gone,
+nothing was started, or nobody waits for the run: its sandbox is killed and
+its record is not kept); for the others the driver is asked to end its
 commands, and is killed with them when it has not within :data:`STOP_GRACE`
 s (:func:`stop_overdue`). A run that never started (it was not unpacked, had
 no sandbox, or was refused or lost on the teacher's side) ends by
@@ -37,9 +39,9 @@ BUILD_LIMIT = 900.0     # wall s for a build
 TRUTH_QUIET = 10.0      # wall s of no ground truth after every command exited
 SIMULATOR_WAIT = 90.0   # wall s after the build for the first ground truth, plus the starts'
 STOP_GRACE = 40.0       # wall s the driver has to end its commands once asked
-AT_ONCE = ('driver_exit', 'build_failed')     # nothing is left to ask to stop
+AT_ONCE = ('driver_exit', 'build_failed', 'cancelled')     # nothing to ask to stop, or now
 NOT_RUN = 'not_run'     # the record's ended_by of a run that never started
-REASONS = AT_ONCE + ('cancelled', 'build_limit', 'duration', 'required_node_died',
+REASONS = AT_ONCE + ('build_limit', 'duration', 'required_node_died',
                      'wall_limit', 'all_exited', 'no_simulator', 'disk_limit')
 
 

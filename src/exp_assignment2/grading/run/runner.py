@@ -11,9 +11,10 @@ import os
 import shutil
 import threading
 import time
+import uuid
 
 from exp_assignment2.grading import record
-from exp_assignment2.grading.judge import verdicts
+from exp_assignment2.grading.judge import again
 from exp_assignment2.grading.plan import build_deps
 from exp_assignment2.grading.plan import packages as packages_
 from exp_assignment2.grading.paths import ROOT
@@ -66,9 +67,11 @@ class Run(object):
         self.events, self.state = [], 'waiting'
         self.news = threading.Event()       # the driver said something (monitor.watch)
         self.result = None
+        self.planned = None     # what the teacher's side planned it from (run.resume)
 
     # the run's files
     def _fresh_dirs(self):
+        record.unfinish(self.record)        # no record beside another attempt's files
         shutil.rmtree(self.dir, ignore_errors=True)
         for path in (self.work, self.record, self.sockets,
                      os.path.join(self.work, 'home'), os.path.join(self.work, 'ros_home'),
@@ -136,7 +139,8 @@ class Run(object):
         spec = self.spec
         result = record.RunRecord.new(
             self.submission.name, self.label, self.seed, version=self.settings.version,
-            profile=self.settings.profile['name'], started=time.time(),
+            profile=self.settings.profile['name'], run_id=uuid.uuid4().hex,
+            started=time.time(),
             commands=list(spec.commands), commands_from=spec.commands_from,
             notes=list(spec.notes), readme_commands=list(spec.readme_commands),
             packages=list(spec.packages), release=spec.release, release_why=spec.release_why)
@@ -212,15 +216,7 @@ class Run(object):
         """The verdict, decided on the run's facts (verdicts.RULES), and the record written."""
         result.setdefault('duration', self.settings.duration)
         result.setdefault('ended_by', ending.NOT_RUN)     # it never started
-        profile = self.settings.profile
-        try:
-            result.update(verdicts.judge(self.work, self.record, result, profile))
-        except Exception as exc:      # noqa: BLE001 -- the grader's fault, this run's only
-            result['grader_fault'] = record.fault('failed while judging it', exc)
-            result.update(verdicts.judge_told(result))
-        if result.get('verdict') == 'not_built':
-            result['reason'] = build_deps.said_by_rosdep(result.get('reason') or '',
-                                                         result.get('notes') or [])
+        again.decide(self.work, self.record, result, self.settings.profile)
         result['finished'] = time.time()
         self.result = record.write(self.record, result)
         self.state = 'done'

@@ -19,6 +19,8 @@ import signal
 import subprocess
 import time
 
+from exp_assignment2.grading.scratch import alive
+
 CGROUP_ROOT = '/sys/fs/cgroup'
 FILE_LIMIT = 64 * 1024 * 1024        # bytes: one file (a log) at most
 SANDBOX_USER = 1000
@@ -49,6 +51,46 @@ def _own_cgroup_v1(controller):
     return None
 
 
+GROUP_PREFIX = 'exp2-grade-'
+
+
+def remove_stale_groups(parent):
+    """The control groups a grader process made in ``parent`` and left when
+    it was killed (SIGKILL leaves no time for :meth:`ControlGroups.remove`):
+    what is left in them killed (bubblewrap's ``--die-with-parent`` has
+    ended their sandboxes already), then removed. A group is stale when the
+    process its name holds is gone; [those removed]."""
+    removed = []
+    try:
+        names = [n for n in os.listdir(parent) if n.startswith(GROUP_PREFIX)]
+    except OSError:
+        return removed
+    for name in names:
+        try:
+            pid = int(name.rsplit('-', 2)[1])
+        except (IndexError, ValueError):
+            continue
+        if alive(pid):
+            continue
+        directory = os.path.join(parent, name)
+        try:
+            with open(os.path.join(directory, 'cgroup.procs')) as f:
+                left = [int(line) for line in f if line.strip()]
+        except (OSError, ValueError):
+            left = []
+        for pid in left:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except OSError:
+                pass
+        try:
+            os.rmdir(directory)         # once its last process is gone (else: the next time)
+            removed.append(name)
+        except OSError:
+            continue
+    return removed
+
+
 class ControlGroups(object):
     """Memory and process-count limits for one run (best effort: ``notes``
     says which limits hold)."""
@@ -63,8 +105,9 @@ class ControlGroups(object):
             if parent is None:
                 self.notes.append('no %s limit (no writable control group)' % controller)
                 continue
-            directory = os.path.join(parent, 'exp2-grade-%s-%d-%d' % (name, os.getpid(),
-                                                                       id(self)))
+            remove_stale_groups(parent)
+            directory = os.path.join(parent, '%s%s-%d-%d' % (GROUP_PREFIX, name, os.getpid(),
+                                                              id(self)))
             try:
                 os.makedirs(directory, exist_ok=True)
                 for key, value in settings.items():

@@ -13,11 +13,11 @@ import io
 import os
 import shutil
 import tarfile
-import tempfile
 import threading
 import time
 
 from exp_assignment2.grading import record
+from exp_assignment2.grading import scratch as grader_scratch
 from exp_assignment2.grading.paths import PACKAGE_XML
 from exp_assignment2.grading.run.runner import Run, RunSettings
 from exp_assignment2.grading.plan.spec import RunSpec
@@ -110,18 +110,28 @@ def pack_run(run_dir, limit=RETURN_LIMIT):
 
 
 def unpack_run(data, run_dir):
-    """The run's directory from ``pack_run``'s bytes (regular files only, inside it)."""
+    """The run's directory from ``pack_run``'s bytes (regular files only,
+    inside it), all but its record; the record's bytes (None: none came), for
+    the teacher's side to write last (record.write), once the rest is there.
+    An earlier record of the run is taken away first (record.unfinish)."""
+    record.unfinish(os.path.join(run_dir, 'record'))
     shutil.rmtree(run_dir, ignore_errors=True)
     os.makedirs(run_dir)
     root = os.path.realpath(run_dir)
+    own = None
     with tarfile.open(fileobj=io.BytesIO(data), mode='r:gz') as archive:
         for member in archive:
             target = os.path.realpath(os.path.join(run_dir, member.name))
             if not member.isfile() or not target.startswith(root + os.sep):
                 continue
+            if member.name == RECORD:
+                with archive.extractfile(member) as src:
+                    own = src.read()
+                continue
             os.makedirs(os.path.dirname(target), exist_ok=True)
             with archive.extractfile(member) as src, open(target, 'wb') as out:
                 shutil.copyfileobj(src, out)
+    return own
 
 
 def _watch(run, stop):
@@ -151,7 +161,7 @@ def run_task(payload, stop=None, scratch_root=None):
     if payload['version'] != mine:
         raise VersionMismatch('this worker has exp_assignment2 %s, the teacher %s: it '
                               'refuses the run' % (mine, payload['version']))
-    scratch = tempfile.mkdtemp(prefix='exp2-grade-', dir=scratch_root)
+    scratch = grader_scratch.make('grade', scratch_root)
     try:
         spec = RunSpec.from_dict(payload['spec'])
         kind = payload['packed_kind']
