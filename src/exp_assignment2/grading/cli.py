@@ -27,6 +27,7 @@ from exp_assignment2.grading.plan.copies import Copies
 from exp_assignment2.grading.progress import Progress
 from exp_assignment2.grading.run.runner import Run, RunSettings
 from exp_assignment2.grading.plan.submissions import SubmissionError
+from exp_assignment2.grading.similarity import command as similarity_command
 
 # 4: the report is written, but some runs could not be graded (grader_error: run them again)
 EXIT_OK, EXIT_USAGE, EXIT_CLUSTER, EXIT_NOT_ALL_GRADED = 0, 2, 3, 4
@@ -62,7 +63,7 @@ def parse_args(argv):
                         help='a git repository is graded at its last commit before TIME (ISO '
                         '8601: 2025-03-01T23:59, local time unless +01:00 or Z; default: '
                         'grading.yaml\'s deadline, else its checked-out commit)')
-    add_similarity_args(parser)
+    similarity_command.add_args(parser)
     args = parser.parse_args(argv)
     if args.deadline is not None:
         from exp_assignment2.grading.plan import deadlines
@@ -191,7 +192,7 @@ def _grade(args, out, log, read, submissions, copies):
     report_resumed.write(out, resume.summary(runs, []))
     if len({r.spec.name for r in runs}) > 1:    # read by the index, written next
         try:
-            similarity_step(args, out, log, read, submissions, copies)
+            similarity_command.step(args, out, log, read, submissions, copies)
         except KeyboardInterrupt:
             log('stopped: the report holds every run, without the similarity column')
             report.write(out, profile, teacher=read[0])
@@ -232,21 +233,6 @@ def report_only(out, read, log):
     return EXIT_OK
 
 
-def add_similarity_args(parser):
-    """The similarity report's options (issue 42; docs/grading.md)."""
-    parser.add_argument('--template', action='append', metavar='DIR',
-                        help='code every student started from, never counted as shared '
-                        '(repeatable; default: grading.yaml\'s template: list)')
-    parser.add_argument('--base-share', type=float, default=0.1, metavar='F',
-                        help='a passage in more than max(3, F x the class) submissions is '
-                        'base code, never counted (default 0.1)')
-    parser.add_argument('--similarity-only', action='store_true',
-                        help='only the similarity report: nothing built or run')
-    parser.add_argument('--reference', action='append', metavar='DIR',
-                        help='a folder of earlier years\' submissions the class is compared '
-                        'with (repeatable; never compared among themselves)')
-
-
 def similarity_only(args, out, log):
     """``--similarity-only``: grading.yaml read and the folder discovered for
     the similarity step alone; the index of a grading's report there written
@@ -260,35 +246,10 @@ def similarity_only(args, out, log):
         log('similarity: %s' % exc)
         return EXIT_USAGE
     with Copies() as copies:
-        code = similarity_step(args, out, log, read, submissions, copies)
+        code = similarity_command.step(args, out, log, read, submissions, copies)
     if code == EXIT_OK and os.path.isfile(os.path.join(out, 'index.html')):
         report.write_index(out, read[1]['profile'])
     return code
-
-
-def similarity_step(args, out, log, read, submissions, copies):
-    """The similarity report of ``submissions`` (their ``copies``) into ``out``,
-    with ``read`` (planning.read_settings'); never changes a verdict or a score."""
-    from exp_assignment2.grading.similarity import step as similarity_run
-    try:
-        teacher, chosen, _ = read
-        templates = similarity_run.templates_of(args, teacher, os.path.abspath(args.submissions))
-        runs_dir = os.path.join(out, 'runs')     # a grading's: the packages its runs built
-        similarity_run.run(submissions, out, templates, copies, args.base_share, args.only, log,
-                           references=similarity_run.references_of(args), settings={
-                               'teacher': teacher, 'profile': chosen['profile'],
-                               'deadline': args.deadline,
-                               'runs_dir': runs_dir if os.path.isdir(runs_dir) else None})
-    except ImportError as exc:      # copydetect: tools/run grade installs it
-        log('similarity: not made: %s' % exc)
-        return EXIT_USAGE
-    except (TeacherFileError, SubmissionError, profiles.ProfileError) as exc:
-        log('similarity: %s' % exc)
-        return EXIT_USAGE
-    except Exception as exc:    # noqa: B902 -- a fault of the similarity's costs no grade
-        log('similarity: failed: %s: %s' % (type(exc).__name__, exc))
-        return 1
-    return EXIT_OK
 
 
 def feedback_line(summaries, out):
