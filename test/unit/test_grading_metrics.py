@@ -34,8 +34,8 @@ def figures(trace, profile):
 def test_a_dog_that_reaches_the_ball_and_looks_around():
     got = figures(metrics.Trace(dog_states()), DOG)
     assert got['approaches'] == (1, True)
-    assert got['first_approach_time'][0] == 8.0       # within 2.0 m at x = 2.0
-    assert got['head_turn_near_ball'] == (1.6, True)   # -0.8 .. 0.8 rad
+    assert got['first_approach_time'][0] == 3.2       # within 3.2 m at x = 0.8
+    assert got['looks_both_ways'] == (1.0, True)      # -0.8 .. 0.8 rad at the resting ball
     assert got['path_length'] == (2.5, True)
     assert got['python_errors'] == (0, True)
 
@@ -48,7 +48,7 @@ def test_a_dog_that_never_moves():
     assert got['first_approach_time'] == (None, False)
     # no joint at all and nothing the simulator said of the robot: which is the
     # head cannot be told, so the check is not run (test_grading_roles.py has the rest)
-    assert got['head_turn_near_ball'] == (None, None)
+    assert got['looks_both_ways'] == (None, None)
     assert got['path_length'] == (0.0, False)
 
 
@@ -170,7 +170,9 @@ def test_verdicts_tell_causes_apart(tmp_path):
     got = judge('ok', {'logs/command-0.log': ''}, states=dog_states())
     assert got['verdict'] == 'passed', got
     got = judge('still', {'logs/command-0.log': ''}, states=dog_states(wiggle=0.1))
-    assert (got['verdict'], got['reason']) == ('failed_checks', 'failed: head turns at the ball')
+    assert (got['verdict'], got['reason']) == (
+        'failed_checks', 'failed: head turns both ways at the ball; not judged: follows the '
+                         'moving ball, gives up a hidden ball, sleeps at home, wanders')
 
 
 def test_a_log_written_after_the_end_is_not_read(tmp_path):

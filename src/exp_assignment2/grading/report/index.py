@@ -14,6 +14,7 @@ import os
 import shutil
 import statistics
 
+from exp_assignment2.grading.report import evidence
 from exp_assignment2.grading.report import feedback
 from exp_assignment2.grading.report import figures
 from exp_assignment2.grading.report import gradescope
@@ -109,7 +110,10 @@ def _run_pictures(run, runs_dir, img_dir, profile):
     roles = roles_.of_run(run, trace, profile)
     label = run['label']
     pictures = {}
-    top = figures.top_view(trace, roles, os.path.join(img_dir, label + '_top.png'))
+    shown = evidence.pictures(record, trace, roles, run, img_dir)     # the checks' moments
+    pictures['evidence'] = shown
+    top = figures.top_view(trace, roles, os.path.join(img_dir, label + '_top.png'),
+                           marks=[(m[0], m[2]) for m in shown['moments']])
     if top:
         pictures['top'] = top
     head = figures.head_angle(trace, roles, os.path.join(img_dir, label + '_head.png'))
@@ -169,6 +173,10 @@ def _page(summary, runs, runs_dir, pictures, profile):
                              report_marks.points_cell(check),
                              report_judged.why_html(check['detail'])))
         parts.append('</table>')
+    episodes = evidence.episodes_sentence(runs)
+    if episodes:
+        parts.append('<p>%s.</p>' % _e(episodes))
+    parts += evidence.section(pictures.get('evidence'), rel)
     parts += report_judged.judged_section(main, profile['checks'])
     if pictures.get('top') or pictures.get('head'):
         parts.append('<h2>What happened</h2><p>')

@@ -30,6 +30,7 @@ from exp_assignment2.grading.run.truth import TruthServer
 from exp_assignment2.launch_surface.viewer import FRAME_RATE_ENV as VIEWER_FRAME_RATE_ENV
 from exp_assignment2.sim.ground_truth import SOCKET_ENV, TOPICS_ENV
 from exp_assignment2.sim.releases import ENV as RELEASE_ENV
+from exp_assignment2.sim.ball_setting import ENV as BALL_SCRIPT_ENV
 
 START_SLACK = 120.0          # wall s on top of the duration: set-up, starting, ending
 WORK_LIMIT = 2 * 1024 ** 3   # bytes the work directory may hold
@@ -119,6 +120,8 @@ class Run(object):
         })
         if self.spec.release:       # the release the student wrote for (ros_release.py)
             env[RELEASE_ENV] = self.spec.release
+        if self.spec.ball_script:   # the course's ball, the same for everyone (episodes.py)
+            env[BALL_SCRIPT_ENV] = json.dumps(self.spec.ball_script)
         env['PATH'] = '/usr/bin:/bin:/usr/sbin:/sbin'
         # the original-code shell writes its python launchers into the workspace:
         # a directory of the run's own is shown there (made once, outside, as
@@ -142,7 +145,7 @@ class Run(object):
                   'commands_from': spec.commands_from, 'notes': list(spec.notes),
                   'readme_commands': list(spec.readme_commands),
                   'packages': list(spec.packages), 'release': spec.release,
-                  'release_why': spec.release_why}
+                  'release_why': spec.release_why, 'episode': spec.episode}
         try:
             self._fresh_dirs()
             self._go(result)
