@@ -63,7 +63,7 @@ def test_a_ball_driven_into_a_parked_robot_is_not_its_reach():
     got = figure(parked, 'approaches')
     assert got[0] == 0 and "1 the ball's coming, not the robot's reach" in got[1]
     # the robot driving to a ball that also rolls at it: its own share of the closing counts
-    both = trace(line(0, 3, 0, 10), line(9, 6, 0, 10), until=20)
+    both = trace(line(0, 4, 0, 10), line(9, 7, 0, 10), until=20)
     assert figure(both, 'approaches')[0] == 1
 
 

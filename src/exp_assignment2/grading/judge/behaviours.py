@@ -18,6 +18,8 @@ from exp_assignment2.grading.judge.trace import NotJudged, need
 ARRIVE = 1.0        # m beyond its radius the robot was before a rest: it came there
 REST = 10.0         # s: a rest this long away from the ball is a sleep (follows, looks)
 STILL = 0.3         # m: a robot resting at a place of its own stays this close to it
+SLACK = 1.0         # s: a run of its full duration may end a state short of it
+GRACE = 4.0         # s after a stop a head's turn still answers it (the ball moved on, or hid)
 
 
 def _track(trace, roles, check, ball=True, head=False):
@@ -75,7 +77,7 @@ def sleeps(trace, roles, check):
     home = check.get('home')
     where = 'home (%g, %g)' % tuple(home) if home else 'a place of its own, away from the ball'
     if not found:
-        if trace.duration < float(check.get('occasion', 0.0)):
+        if trace.duration < float(check.get('occasion', 0.0)) - SLACK:
             raise NotJudged('no rest at %s in %.0f s, and a sleep may come later (it comes at '
                             'random: %g s is a run long enough for it)' % (
                                 where, trace.duration, check['occasion']))
@@ -83,7 +85,7 @@ def sleeps(trace, roles, check):
             where, float(check.get('radius', check.get('home_radius', 1.0))), least / 2.0), None
     a, b, x, y = max(found, key=lambda r: track[r[1]].t - track[r[0]].t)
     rested = track[b].t - track[a].t
-    if rested < least and trace.duration < float(check.get('occasion', 0.0)):
+    if rested < least and trace.duration < float(check.get('occasion', 0.0)) - SLACK:
         raise NotJudged('rested only %.1f s in a run of %.0f s (a sleep comes at random: a run '
                         'of %g s gives it its occasion)' % (rested, trace.duration,
                                                              check['occasion']))
@@ -147,31 +149,36 @@ def follows_ball(trace, roles, check):
 
 
 def looks_both_ways(trace, roles, check):
-    """Share of the ball's stops at which the robot, within ``reach``, turned its head
-    at least ``angle`` rad to each side."""
+    """Share of the ball's stops the robot came to (within ``reach``, awake) at which it
+    turned its head at least ``angle`` rad to each side, by ``grace`` s after the stop."""
     track = _track(trace, roles, check, head=True)
     speeds, asleep, reach = bt.ball_speeds(track), _asleep(track, check), _reach(check)
-    angle = float(check.get('angle', 0.3))
+    angle, grace = float(check.get('angle', 0.3)), float(check.get('grace', GRACE))
     found = [(a, b) for a, b in bt.stops(track, speeds, float(check.get('stop', 3.0)),
                                          float(check.get('moving', bt.MOVING)))
              if sum(k in asleep for k in range(a, b + 1)) * 2 < b - a + 1]
     if not found:
         raise NotJudged('the ball never stopped %g s while the robot was awake'
                         % float(check.get('stop', 3.0)))
+    came = [(next((k for k in range(a, b + 1) if bt.distance(track[k]) <= reach), None), b)
+            for a, b in found]
+    came = [(k, b) for k, b in came if k is not None]
+    if not came:
+        return 0.0, '%s: the ball stopped %d times; the robot came within %g m of it at none' % (
+            roles.head.name, len(found), reach), track[found[0][0]].t
     swept, at = 0, None
-    for a, b in found:
-        near = next((k for k in range(a, b + 1) if bt.distance(track[k]) <= reach), None)
-        if near is None:
-            continue
-        left = next((s.t for s in track[near:b + 1] if (s.head or 0.0) >= angle), None)
-        right = next((s.t for s in track[near:b + 1] if (s.head or 0.0) <= -angle), None)
+    for near, b in came:
+        until = track[b].t + grace
+        during = [s for s in track[near:] if s.t <= until]
+        left = next((s.t for s in during if (s.head or 0.0) >= angle), None)
+        right = next((s.t for s in during if (s.head or 0.0) <= -angle), None)
         if left is not None and right is not None:
             swept += 1
             at = at if at is not None else max(left, right)
-    return round(swept / float(len(found)), 3), '%s: %d of %d stops of the ball, turned the ' \
-        'head at least %g rad each way within %g m' % (roles.head.name, swept, len(found), angle,
-                                                      reach), \
-        at if at is not None else track[found[0][0]].t
+    return round(swept / float(len(came)), 3), '%s: at %d of the %d stops of the ball it came ' \
+        'to (within %g m), turned the head at least %g rad each way' % (
+            roles.head.name, swept, len(came), reach, angle), \
+        at if at is not None else track[came[0][0]].t
 
 
 def gives_up_ball(trace, roles, check):

@@ -6,11 +6,13 @@ A **stay** near the ball begins when the distance (centres, in the plane)
 falls within ``reach`` and ends when it passes 1.25 x ``reach``, or when the
 ball is gone (hidden under the floor: the robot standing over the place where
 it went under is not near it). A stay is the robot's **reach** when the
-robot's own driving made most of the closing: from the last moment it was out
-(or the ball's appearance, or the run's start) to its closest, the distance
-the robot's own moves closed (each step's change with the ball held where it
-was) is at least ``own`` (default 0.5) of the distance closed and at least
-``closing`` m (default 0.3). A ball rolled into a robot that stood still is a
+robot's own driving made most of the approach: from the last moment the ball
+was 2 x ``reach`` away (or its appearance, or the run's start) to the moment
+it came within ``reach`` (for a stay it was in from the start: to its
+closest), the distance the robot's own moves closed (each step's change with
+the ball held where it was) is at least ``own`` (default 0.5) of the distance
+closed and at least ``closing`` m (default 0.3). A ball rolled into a robot
+that stood still is a
 stay, not a reach; a robot spawned beside the ball reaches it only once it
 drives to it. The reach's moment is when it came within ``reach``, or, for a
 stay it was in from the start, when its own driving had closed ``closing`` m.
@@ -22,6 +24,7 @@ from collections import namedtuple
 from exp_assignment2.grading.judge import ball_track
 
 OUT = 1.25          # x reach: out again
+FAR = 2.0           # x reach: an approach is judged from the last moment the ball was this far
 OWN, CLOSING = 0.5, 0.3
 
 Stay = namedtuple('Stay', 't_in t_out closest own closed at robots i_in i_out')
@@ -57,26 +60,28 @@ def stays(track, reach, own=OWN, closing=CLOSING):
     """[:class:`Stay`] of a :func:`~.ball_track.samples` track."""
     found = []
     for a0, b0 in ball_track.spans(track, lambda i: track[i].there):
-        out_at = a0            # the last sample out (or where the ball appeared)
+        far_at = a0            # the last sample far from it (or where the ball appeared)
         i = a0
         while i <= b0:
             d = ball_track.distance(track[i])
             if d > reach:
-                if d >= OUT * reach:
-                    out_at = i
+                if d >= FAR * reach:
+                    far_at = i
                 i += 1
                 continue
             j = i
             while j + 1 <= b0 and ball_track.distance(track[j + 1]) < OUT * reach:
                 j += 1
             close = min(range(i, j + 1), key=lambda k: ball_track.distance(track[k]))
-            mine = _own_closing(track, out_at, close)
-            closed = ball_track.distance(track[out_at]) - ball_track.distance(track[close])
+            # how it came within reach: from far (or, in reach from the start, to its closest)
+            end = i if i > a0 else close
+            mine = _own_closing(track, far_at, end)
+            closed = ball_track.distance(track[far_at]) - ball_track.distance(track[end])
             robots = mine >= closing and mine >= own * closed
             found.append(Stay(track[i].t, track[j].t, ball_track.distance(track[close]), mine,
-                              closed, _at(track, out_at, i, closing) if robots else None,
+                              closed, _at(track, far_at, i, closing) if robots else None,
                               robots, i, j))
-            out_at, i = j, j + 1
+            i = j + 1
     return found
 
 

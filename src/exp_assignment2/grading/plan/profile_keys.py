@@ -23,7 +23,8 @@ SHARED = ('reach', 'home', 'home_radius', 'arena', 'camera_fov')
 SCRIPT_KEYS = ('seed', 'seeds', 'hidden', 'model')
 # check keys that are a number (metrics.py and behaviours.py read them)
 NUMBER_KEYS = ('min', 'max', 'reach', 'tolerance', 'occasion', 'spacing', 'gap', 'follow',
-               'moving', 'angle', 'stop', 'near', 'leave', 'own', 'closing', 'radius')
+               'moving', 'angle', 'stop', 'near', 'leave', 'own', 'closing', 'radius', 'grace',
+               'rest')
 
 
 def _number(value):

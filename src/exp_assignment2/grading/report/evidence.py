@@ -79,11 +79,13 @@ def section(shown, rel, names=None, heading='When each check was decided', your=
     if not rows:
         return parts
     parts.append('<h2>%s</h2><p>Each number is on the arena plot where the robot was at that '
-                 'moment.</p><table class="frames"><tr><th>#</th><th>check</th><th>at '
+                 'moment.</p><style>img.moment{width:200px}</style><table class="frames">'
+                 '<tr><th>#</th><th>check</th><th>at '
                  '(simulated s)</th><th>the robot\'s camera then</th></tr>' % _e(heading))
     for number, name, at, frame in rows:
         parts.append('<tr><td>%d</td><td>%s</td><td>%.1f</td><td>%s</td></tr>' % (
-            number, _e(name), at, '<img src="%s" alt="camera at %.1f s">' % (rel(frame), at)
+            number, _e(name), at, '<img class="moment" src="%s" alt="camera at %.1f s">' % (
+                rel(frame), at)
             if frame else 'no frame of its camera then'))
     parts.append('</table>')
     return parts
