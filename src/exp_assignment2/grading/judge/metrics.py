@@ -81,7 +81,8 @@ def head_turn_near_ball(trace, roles, check):
 
 
 def path_length(trace, roles, check):
-    """m the robot drove: positions over a second, steps under 5 cm left out (:meth:`Trace.driven`)."""
+    """m the robot drove: positions over a second, steps under 5 cm left out
+    (:meth:`Trace.driven`)."""
     robot = need(roles.robot)
     points = trace.xy(robot)
     if not points:

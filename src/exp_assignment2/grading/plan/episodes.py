@@ -9,8 +9,8 @@ A seed the script lists as ``hidden`` is a hidden episode: it counts in the
 figures and the score, and the student's page neither names its seed nor
 shows its pictures (Gradescope's ``hidden``). Without a script, episodes are
 repeats: each run has its own seed and the student's ball node moves the ball.
+(The runner puts :func:`ball_script` in the sandbox as ``EXP2_BALL_SCRIPT``.)
 """
-from exp_assignment2.sim.ball_setting import ENV  # noqa: F401 -- the runner sets it
 
 
 def default_count(profile):
