@@ -152,7 +152,15 @@ def test_the_head_both_ways_at_the_stopped_ball():
     one_way = trace(at_ball, lambda t: (2.8, 0, 0.5), head=lambda t: 0.8 * abs(math.sin(t)))
     assert figure(one_way, 'looks_both_ways')[0] == 0.0
     far = trace(at_ball, lambda t: (6, 0, 0.5), head=lambda t: 0.8 * math.sin(t))
-    assert figure(far, 'looks_both_ways')[0] == 0.0      # not at the ball: no occasion used
+    assert figure(far, 'looks_both_ways')[0] == 0.0      # never came to the stopped ball
+    # it came 2 s before the ball rolled on: no time to look, no occasion; a ball rolled
+    # onto the robot (0.2 m: it sees nothing of it) neither
+    late = trace(line(0, 1.2, 6, 8), lambda t: (4 if t < 10 else 4 + (t - 10), 0, 0.5),
+                 until=20, head=lambda t: 0.0)
+    with pytest.raises(metrics.NotJudged, match='came too late to look'):
+        figure(late, 'looks_both_ways')
+    on_it = trace(at_ball, lambda t: (0.2, 0, 0.5), head=lambda t: 0.0)
+    assert figure(on_it, 'looks_both_ways')[0] == 0.0
 
 
 def test_wandering_while_the_ball_is_out_of_sight():

@@ -46,8 +46,8 @@ def test_each_threshold_is_the_references_figure_with_its_margin(monkeypatch, tm
     assert checks['follows_ball']['min'] == 0.55                # 0.7 - 20 %
     assert checks['looks_both_ways']['min'] == 0.6              # 0.75 - 20 %
     assert (checks['gives_up_ball']['max'], checks['gives_up_ball']['zero']) == (25, 50)
-    assert (checks['sleeps']['min'], checks['sleeps']['zero']) == (12, 6)
-    assert checks['wanders']['min'] == 4                        # 70 % of 6
+    assert (checks['sleeps']['min'], checks['sleeps']['zero']) == (7, 3.5)   # half of 15.2
+    assert checks['wanders']['min'] == 3                        # half of 6
     assert got['duration'] == 170 and checks['sleeps']['occasion'] == 170   # 152 + 10 %
     assert (checks['first_approach_time']['max'], checks['first_approach_time']['zero']) == (
         70, 170)

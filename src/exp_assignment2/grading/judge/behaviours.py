@@ -19,6 +19,8 @@ ARRIVE = 1.0        # m beyond its radius the robot was before a rest: it came t
 REST = 10.0         # s: a rest this long away from the ball is a sleep (follows, looks)
 STILL = 0.3         # m: a robot resting at a place of its own stays this close to it
 SLACK = 1.0         # s: a run of its full duration may end a state short of it
+LOOK = 4.0          # s at the stopped ball: time to look around (a later arrival is no occasion)
+ON = 1.0            # m: a ball closer than this is on the robot (rolled through it): unseen
 GRACE = 4.0         # s after a stop a head's turn still answers it (the ball moved on, or hid)
 
 
@@ -149,25 +151,31 @@ def follows_ball(trace, roles, check):
 
 
 def looks_both_ways(trace, roles, check):
-    """Share of the ball's stops the robot came to (within ``reach``, awake) at which it
-    turned its head at least ``angle`` rad to each side, by ``grace`` s after the stop."""
+    """Share of the ball's stops the robot stayed at (within ``reach``, not on it, awake,
+    ``look`` s) at which it turned its head at least ``angle`` rad to each side, by
+    ``grace`` s after the stop."""
     track = _track(trace, roles, check, head=True)
     speeds, asleep, reach = bt.ball_speeds(track), _asleep(track, check), _reach(check)
     angle, grace = float(check.get('angle', 0.3)), float(check.get('grace', GRACE))
+    look = float(check.get('look', LOOK))
     found = [(a, b) for a, b in bt.stops(track, speeds, float(check.get('stop', 3.0)),
                                          float(check.get('moving', bt.MOVING)))
              if sum(k in asleep for k in range(a, b + 1)) * 2 < b - a + 1]
-    if not found:
-        raise NotJudged('the ball never stopped %g s while the robot was awake'
-                        % float(check.get('stop', 3.0)))
-    came = [(next((k for k in range(a, b + 1) if bt.distance(track[k]) <= reach), None), b)
-            for a, b in found]
-    came = [(k, b) for k, b in came if k is not None]
-    if not came:
-        return 0.0, '%s: the ball stopped %d times; the robot came within %g m of it at none' % (
-            roles.head.name, len(found), reach), track[found[0][0]].t
+    stayed, late = [], 0
+    for a, b in found:
+        near = [k for k in range(a, b + 1) if ON < bt.distance(track[k]) <= reach]
+        if near and track[b].t - track[near[0]].t >= look:
+            stayed.append((near[0], b))
+        late += bool(near) and track[b].t - track[near[0]].t < look
+    if not stayed:
+        if found and not late:
+            return 0.0, '%s: the ball stopped %d times; the robot came within %g m of it at ' \
+                'none' % (roles.head.name, len(found), reach), track[found[0][0]].t
+        raise NotJudged('the robot stayed %g s at none of the ball\'s stops (it stopped %d '
+                        'times while the robot was awake; %d times it came too late to look)'
+                        % (look, len(found), late))
     swept, at = 0, None
-    for near, b in came:
+    for near, b in stayed:
         until = track[b].t + grace
         during = [s for s in track[near:] if s.t <= until]
         left = next((s.t for s in during if (s.head or 0.0) >= angle), None)
@@ -175,10 +183,10 @@ def looks_both_ways(trace, roles, check):
         if left is not None and right is not None:
             swept += 1
             at = at if at is not None else max(left, right)
-    return round(swept / float(len(came)), 3), '%s: at %d of the %d stops of the ball it came ' \
-        'to (within %g m), turned the head at least %g rad each way' % (
-            roles.head.name, swept, len(came), reach, angle), \
-        at if at is not None else track[came[0][0]].t
+    return round(swept / float(len(stayed)), 3), '%s: at %d of the %d stops of the ball it ' \
+        'stayed at (within %g m, %g s), turned the head at least %g rad each way' % (
+            roles.head.name, swept, len(stayed), reach, look, angle), \
+        at if at is not None else track[stayed[0][0]].t
 
 
 def gives_up_ball(trace, roles, check):
