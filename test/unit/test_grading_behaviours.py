@@ -99,6 +99,12 @@ def test_a_sleep_at_home():
     assert got[2] == pytest.approx(18.8, abs=0.5)         # when it had rested min s
     assert figure(run, 'sleeps')[0] == pytest.approx(16, abs=1)     # a home of its own
     assert figure(run, 'sleeps', home=[6, 6], occasion=30)[0] == 0.0    # not the profile's home
+    # turning on the spot 15 s to search for the ball is not resting at a home of its own
+    searching = lambda t: robot(t) if not 10 <= t < 25 else (-6.0, -6.0, 0.5 * (t - 10))  # noqa
+    assert figure(trace(searching, lambda t: (5, 5, 0.5), until=40), 'sleeps',
+                  occasion=30)[0] == 0.0
+    assert figure(trace(searching, lambda t: (5, 5, 0.5), until=40), 'sleeps',
+                  home=[-6, -6])[0] == pytest.approx(18.2, abs=0.5)    # but it is at home
     # at home from the start, never left: it did not go there
     assert figure(trace(still(-6, -6), lambda t: (5, 5, 0.5), until=200), 'sleeps',
                   home=[-6, -6])[0] == 0.0

@@ -18,6 +18,7 @@ from exp_assignment2.grading.judge.trace import NotJudged, need
 ARRIVE = 1.0        # m beyond its radius the robot was before a rest: it came there
 REST = 10.0         # s: a rest this long away from the ball is a sleep (follows, looks)
 STILL = 0.3         # m: a robot resting at a place of its own stays this close to it
+STILL_YAW = 0.35    # rad: and turns no more than this
 SLACK = 1.0         # s: a run of its full duration may end a state short of it
 LOOK = 4.0          # s at the stopped ball: time to look around (a later arrival is no occasion)
 ON = 1.0            # m: a ball closer than this is on the robot (rolled through it): unseen
@@ -42,18 +43,20 @@ def rests(track, check, least):
     """[(i0, i1, x, y)]: the robot came (from more than its radius + ARRIVE m
     away) to its home, the profile's ``home``, and stayed within ``radius`` m of
     it ``least`` s; without a home, to any place away from the ball (a home of
-    its own), where it stayed still (within :data:`STILL` m)."""
+    its own), where it stayed still (within :data:`STILL` m, its heading within
+    :data:`STILL_YAW` rad: a dog turning on the spot to search is not asleep)."""
     home = check.get('home')
     radius = float(check.get('radius', check.get('home_radius', 1.0)))
     radius = radius if home else min(radius, STILL)
     far = OUT * _reach(check)
     pts = bt.smoothed([(s.t, s.rx, s.ry) for s in track])
     gap = lambda i, x, y: math.hypot(pts[i][1] - x, pts[i][2] - y)  # noqa: E731
+    turned = lambda i, j: home is None and _turn(track[i].ryaw, track[j].ryaw) > STILL_YAW  # noqa
     found, i = [], 0
     while i < len(pts):
         x, y = home if home else pts[i][1:]
         j = i
-        while j + 1 < len(pts) and gap(j + 1, x, y) <= radius:
+        while j + 1 < len(pts) and gap(j + 1, x, y) <= radius and not turned(i, j + 1):
             j += 1
         if (gap(i, x, y) <= radius and pts[j][0] - pts[i][0] >= least
                 and (home or not (track[i].there and bt.distance(track[i]) <= far))
@@ -63,6 +66,13 @@ def rests(track, check, least):
         else:
             i += 1
     return found
+
+
+def _turn(a, b):
+    """rad between two headings (0 where one is unknown)."""
+    if a is None or b is None:
+        return 0.0
+    return abs(math.atan2(math.sin(a - b), math.cos(a - b)))
 
 
 def _asleep(track, check):
