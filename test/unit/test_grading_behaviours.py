@@ -72,6 +72,11 @@ def test_a_robot_spawned_beside_the_ball_reaches_it_once_it_drives_to_it():
     got = figure(beside, 'approaches')
     assert got[0] == 1 and got[2] == pytest.approx(6.9, abs=0.2)   # 0.3 m driven by then
     assert figure(trace(still(), lambda t: (2.6, 0.0, 0.5)), 'approaches')[0] == 0
+    # spawned 2.2 m from it, it drove off to 4.8 m, then came back: that return is its reach
+    away_and_back = lambda t: (line(0, -2.6, 4, 10)(t) if t < 10 else  # noqa: E731
+                               line(-2.6, 0.5, 12, 16)(t))
+    got = figure(trace(away_and_back, lambda t: (2.2, 0.0, 0.5), until=30), 'approaches')
+    assert got[0] == 1 and got[2] == pytest.approx(14.1, abs=0.2)     # back within 3.2 m
 
 
 def test_jitter_in_place_is_not_a_path():

@@ -93,8 +93,9 @@ def sleeps(trace, roles, check):
             raise NotJudged('no rest at %s in %.0f s, and a sleep may come later (it comes at '
                             'random: %g s is a run long enough for it)' % (
                                 where, trace.duration, check['occasion']))
+        radius = float(check.get('radius', check.get('home_radius', 1.0)))
         return 0.0, 'never came to %s and stayed within %.1f m of it %g s' % (
-            where, float(check.get('radius', check.get('home_radius', 1.0))), least / 2.0), None
+            where, radius if home else min(radius, STILL), least / 2.0), None
     a, b, x, y = max(found, key=lambda r: track[r[1]].t - track[r[0]].t)
     rested = track[b].t - track[a].t
     if rested < least and trace.duration < float(check.get('occasion', 0.0)) - SLACK:

@@ -6,17 +6,18 @@ A **stay** near the ball begins when the distance (centres, in the plane)
 falls within ``reach`` and ends when it passes 1.25 x ``reach``, or when the
 ball is gone (hidden under the floor: the robot standing over the place where
 it went under is not near it). A stay is the robot's **reach** when the
-robot's own driving made most of the approach: from the last moment the ball
-was 2 x ``reach`` away (or its appearance, or the run's start) to the moment
-it came within ``reach`` (for a stay it was in from the start: to its
-closest), the distance the robot's own moves closed (each step's change with
-the ball held where it was) is at least ``own`` (default 0.5) of the distance
-closed and at least ``closing`` m (default 0.3). A ball rolled into a robot
-that stood still is a
-stay, not a reach; a robot spawned beside the ball reaches it only once it
-drives to it. The reach's moment is when it came within ``reach``, or, for a
-stay it was in from the start, when its own driving had closed ``closing`` m.
-The head's check judges the same stays, with the same ``reach``.
+robot's own driving made most of the approach: from where the approach began
+(the last moment the ball was 2 x ``reach`` away since the last stay, else the
+farthest it was since then, or since the ball's appearance or the run's
+start) to the moment it came within ``reach`` (for a stay it was in from the
+start: to its closest), the distance the robot's own moves closed (each
+step's change with the ball held where it was) is at least ``own`` (default
+0.5) of the distance closed and at least ``closing`` m (default 0.3). A ball
+rolled into a robot that stood still is a stay, not a reach; a robot spawned
+beside the ball reaches it only once it drives to it. The reach's moment is
+when it came within ``reach``, or, for a stay it was in from the start, when
+its own driving had closed ``closing`` m. The head's check judges the same
+stays, with the same ``reach``.
 """
 import math
 from collections import namedtuple
@@ -60,28 +61,33 @@ def stays(track, reach, own=OWN, closing=CLOSING):
     """[:class:`Stay`] of a :func:`~.ball_track.samples` track."""
     found = []
     for a0, b0 in ball_track.spans(track, lambda i: track[i].there):
-        far_at = a0            # the last sample far from it (or where the ball appeared)
+        # where the approach began: the last sample far from it since the last stay (or
+        # the ball's appearance), else the farthest one since then
+        far_at, peak = None, a0
         i = a0
         while i <= b0:
             d = ball_track.distance(track[i])
             if d > reach:
                 if d >= FAR * reach:
                     far_at = i
+                if d > ball_track.distance(track[peak]):
+                    peak = i
                 i += 1
                 continue
+            start = far_at if far_at is not None else peak
             j = i
             while j + 1 <= b0 and ball_track.distance(track[j + 1]) < OUT * reach:
                 j += 1
             close = min(range(i, j + 1), key=lambda k: ball_track.distance(track[k]))
             # how it came within reach: from far (or, in reach from the start, to its closest)
-            end = i if i > a0 else close
-            mine = _own_closing(track, far_at, end)
-            closed = ball_track.distance(track[far_at]) - ball_track.distance(track[end])
+            end = i if i > start else close
+            mine = _own_closing(track, start, end)
+            closed = ball_track.distance(track[start]) - ball_track.distance(track[end])
             robots = mine >= closing and mine >= own * closed
             found.append(Stay(track[i].t, track[j].t, ball_track.distance(track[close]), mine,
-                              closed, _at(track, far_at, i, closing) if robots else None,
+                              closed, _at(track, start, i, closing) if robots else None,
                               robots, i, j))
-            i = j + 1
+            far_at, peak, i = None, min(j + 1, b0), j + 1
     return found
 
 
