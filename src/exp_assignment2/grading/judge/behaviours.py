@@ -58,11 +58,11 @@ def rests(track, check, least):
         j = i
         while j + 1 < len(pts) and gap(j + 1, x, y) <= radius and not turned(i, j + 1):
             j += 1
-        if (gap(i, x, y) <= radius and pts[j][0] - pts[i][0] >= least
-                and (home or not (track[i].there and bt.distance(track[i]) <= far))
-                and any(gap(k, x, y) > radius + ARRIVE for k in range(i))):
-            found.append((i, j, x, y))
-            i = j + 1
+        if gap(i, x, y) <= radius and pts[j][0] - pts[i][0] >= least:
+            if (home or not (track[i].there and bt.distance(track[i]) <= far)) and \
+                    any(gap(k, x, y) > radius + ARRIVE for k in range(i)):
+                found.append((i, j, x, y))
+            i = j + 1       # a stay it did not come to (spawned there), or at the ball: whole
         else:
             i += 1
     return found
