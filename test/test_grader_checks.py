@@ -97,7 +97,7 @@ def test_the_scripted_ball_is_the_same_in_two_runs_of_one_seed(checked):
     course = ball_script.from_legs(first['legs'], None, {'duration': first['duration'],
                                                          'radius': 0.5, 'ground_z': 0.5})
     for where in (first_where, second_where):
-        assert len(where) > 1500       # a state every 0.1 s of 200 s, a few dropped at most
+        assert len(where) > 2000       # a state every 0.1 s of 240 s, a few dropped at most
         for t, (x, y, z) in where:
             there = ball_script.play(course, t)
             assert (x, y, z) == pytest.approx((there.x, there.y, there.z), abs=1e-3), t
@@ -109,7 +109,7 @@ def test_the_scripted_ball_is_the_same_in_two_runs_of_one_seed(checked):
 def test_the_pages_say_which_ball_and_when_each_check_was_decided(checked):
     with open(os.path.join(checked['out'], 'pages', 'reference.html')) as f:
         page = f.read()
-    assert 'The ball followed the course&#x27;s script (seed 1, 200 s); the submission&#x27;s ' \
+    assert 'The ball followed the course&#x27;s script (seed 1, 240 s); the submission&#x27;s ' \
         'ball node&#x27;s ' in page and ' commands were ignored.' in page
     assert '<h2>When each check was decided</h2>' in page
     moments = [c for c in checked['runs']['reference']['checks'] if c['at'] is not None]

@@ -113,7 +113,7 @@ def test_a_teachers_copy_with_a_changed_threshold(tmp_path):
      "ball: script: unknown key 'sed' (known: seed, seeds, hidden, model)"),
     (('ball: ball ', 'ball: {name: ball, script: {seeds: [3], hidden: [4]}} '),
      "ball: script: hidden: [4]: a list of the script's seeds"),
-    (('duration: 200', 'duration: -1'), 'duration: -1 is not a positive number'),
+    (('duration: 240', 'duration: -1'), 'duration: -1 is not a positive number'),
 ])
 def test_a_broken_profile_is_one_line(tmp_path, change, message):
     text = open(profiles.PROFILE_DIR + '/dog.yaml').read().replace(*change)

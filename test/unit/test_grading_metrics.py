@@ -148,7 +148,7 @@ def test_verdicts_tell_causes_apart(tmp_path):
                 ended_by='required_node_died', ended_at=5.0, required_node='dog-5')
     assert (got['verdict'], got['reason']) == (
         'crashed', 'dog-5 died (exit code 1): RuntimeError: the dog has no legs; it was '
-                   'required="true": roslaunch shut its launch down at 5 of 200 simulated s')
+                   'required="true": roslaunch shut its launch down at 5 of 240 simulated s')
     assert got['died'][0]['required'] is True
     # judged on the truth until the crash, so that it keeps the points it earned (scores)
     assert got['checks_until'] == 'crashed' and [c['name'] for c in got['checks']] == [
@@ -160,7 +160,7 @@ def test_verdicts_tell_causes_apart(tmp_path):
     assert got['verdict'] == 'grader_error'
     got = judge('slow', {'logs/command-0.log': ''}, states=dog_states(until=5),
                 ended_by='wall_limit')
-    assert (got['verdict'], got['reason']) == ('timed_out', '5 of 200 simulated s within the '
+    assert (got['verdict'], got['reason']) == ('timed_out', '5 of 240 simulated s within the '
                                                             'wall-clock limit')
     assert got['checks_until'] == 'timed_out' and len(got['checks']) == len(DOG['checks'])
     # the run's own duration (--duration 60), not the profile's
