@@ -26,12 +26,12 @@ import subprocess
 import sys
 import time
 
+from exp_assignment2.grading.paths import REPO
 from exp_assignment2.grading.report.feedback import cleaner, to_fix, words
 from exp_assignment2.grading.report.html import figure
 
 ROOT_ENV = 'EXP2_AUTOGRADER_ROOT'
 ARGS_ENV = 'EXP2_AUTOGRADER_ARGS'      # more arguments of grade, e.g. "--profile miro"
-REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), '..', '..', '..'))
 
 
 def _text(item_html):
