@@ -29,7 +29,8 @@ from grading_run import graded  # noqa: E402,F401  (the grader tests' one gradin
 
 # The suite runs on several workers (pytest-xdist, tools/run test): the long
 # tests go first, so that no worker is left with one of them at the end.
-SLOW_FIRST = ('test_grader.py', 'test_grader_roles.py', 'test_grader_shapes.py',
+SLOW_FIRST = ('test_grader.py', 'test_grader_checks.py', 'test_grader_roles.py',
+              'test_grader_shapes.py',
               'test_grader_releases.py', 'test_grader_starts.py', 'test_grader_py2.py',
               'test_grader_dask.py', 'test_grader_resume.py', 'test_grader_git.py',
               'test_install_space.py', 'test_overlay.py',

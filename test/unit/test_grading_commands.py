@@ -86,23 +86,34 @@ def test_the_two_profiles_load():
     dog, miro = profiles.load('dog'), profiles.load('miro')
     assert dog['robot'] == 'robot' and dog['ball'] == 'ball'
     assert [c['metric'] for c in dog['checks']] == [
-        'approaches', 'first_approach_time', 'head_turn_near_ball', 'path_length',
-        'python_errors']
+        'approaches', 'first_approach_time', 'looks_both_ways', 'follows_ball', 'gives_up_ball',
+        'sleeps', 'wanders', 'path_length', 'python_errors']
+    assert dog['ball_script'] is None and dog['reach'] == 3.2      # the student's own ball
     assert miro['record_topics'] == ['/target_pos']
+    course = profiles.load('dog_course')      # the dog's, on the course's ball (base: dog)
+    assert course['ball'] == 'ball' and course['ball_script'] == {
+        'seeds': [1], 'hidden': [], 'model': None}
+    assert course['checks'] == dog['checks'] and course['name'] == 'dog_course'
 
 
 def test_a_teachers_copy_with_a_changed_threshold(tmp_path):
-    text = open(profiles.PROFILE_DIR + '/dog.yaml').read().replace('min: 0.6', 'min: 1.2')
+    text = open(profiles.PROFILE_DIR + '/dog.yaml').read().replace('angle: 0.4 ', 'angle: 0.7 ')
     (tmp_path / 'strict.yaml').write_text(text)
     strict = profiles.load(str(tmp_path / 'strict.yaml'))
-    assert [c['min'] for c in strict['checks'] if c['metric'] == 'head_turn_near_ball'] == [1.2]
+    assert [c['angle'] for c in strict['checks'] if c['metric'] == 'looks_both_ways'] == [0.7]
 
 
 @pytest.mark.parametrize('change, message', [
     (('metric: path_length', 'metric: path_lenght'), "metric 'path_lenght' is not one of"),
-    (('    reach: 2.0 ', '    reech: 2.0 '), "unknown key 'reech' (did you "
-                                                           "mean 'reach'?)"),
-    (('duration: 200', 'duration: -1'), 'duration: -1 is not a positive number'),
+    (('    leave: 2.0 ', '    leeve: 2.0 '), "unknown key 'leeve' (did you "
+                                                           "mean 'leave'?)"),
+    (('reach: 3.2 ', 'reach: -3 '), 'reach: -3 is not a positive distance in m'),
+    (('home: null ', 'home: [1] '), 'home: [1] is not [x, y] in m'),
+    (('ball: ball ', 'ball: {name: ball, script: {sed: 3}} '),
+     "ball: script: unknown key 'sed' (known: seed, seeds, hidden, model)"),
+    (('ball: ball ', 'ball: {name: ball, script: {seeds: [3], hidden: [4]}} '),
+     "ball: script: hidden: [4]: a list of the script's seeds"),
+    (('duration: 240', 'duration: -1'), 'duration: -1 is not a positive number'),
 ])
 def test_a_broken_profile_is_one_line(tmp_path, change, message):
     text = open(profiles.PROFILE_DIR + '/dog.yaml').read().replace(*change)

@@ -13,8 +13,10 @@ from exp_assignment2.grading.report import gradebook
 from exp_assignment2.grading.report import index as report
 from test_grading_marks import class_of_four
 from test_grading_report import write_run
+from test_grading_scores import GOOD, RUBRIC
 
-DOG = profiles.load('dog')
+# the marks on a rubric of their own (the dog's before its behaviours), with the dog's title
+DOG = dict(RUBRIC, title=profiles.load('dog')['title'])
 GIT = {'commit': 'a' * 40, 'short': 'aaaaaaa', 'date': '2025-03-03 10:00 +0100',
        'subject': 'the last fix', 'how': 'grading.yaml names it (commit: aaaaaaa)',
        'deadline': '2025-03-01 23:59 +0100', 'extension': False, 'after': 1,
@@ -86,23 +88,27 @@ def test_grading_yaml_keys_of_a_term(tmp_path):
 
 def test_a_late_commit_graded_on_purpose_loses_its_points_on_every_page(tmp_path):
     runs = str(tmp_path / 'runs')
-    write_run(runs, 'ann', 'ann', 'passed', 1.0, git=GIT)
-    write_run(runs, 'ben', 'ben', 'passed', 1.0, git=dict(GIT, late_days=0, late_points=0.0))
+    full = [{'name': c['name'], 'metric': c['metric'], 'value': v, 'threshold': '', 'passed': True,
+             'detail': ''}
+            for c, v in zip(DOG['checks'], GOOD)]       # 100 points on time
+    write_run(runs, 'ann', 'ann', 'passed', 1.0, git=GIT, checks=full)
+    write_run(runs, 'ben', 'ben', 'passed', 1.0, git=dict(GIT, late_days=0, late_points=0.0),
+              checks=full)
     summaries = report.write(str(tmp_path), DOG, teacher={'students': {'ann': 'S1'}})
     ann, ben = summaries['ann'], summaries['ben']
-    assert ann['score_before_late'] == ben['score'] == 91 and ann['score'] == 71
+    assert ann['score_before_late'] == ben['score'] == 100 and ann['score'] == 80
     assert '20 points off: 2 days late' in ann['score_why']
     page = open(str(tmp_path / 'pages' / 'ann.html')).read()
     assert 'Commit graded' in page and 'aaaaaaa (2025-03-03 10:00 +0100, &quot;the last fix' \
-        in page and '2 days late: 20 points off' in page and 'Score 71 / 100' in page
+        in page and '2 days late: 20 points off' in page and 'Score 80 / 100' in page
     student = open(str(tmp_path / 'feedback' / 'ann.html')).read()
     assert 'aaaaaaa' in student and '2 days late: 20 points off' in student
     results = json.load(open(str(tmp_path / 'gradescope' / 'ann' / 'results.json')))
-    assert results['score'] == 71 and 'aaaaaaa' in results['output']
+    assert results['score'] == 80 and 'aaaaaaa' in results['output']
     assert rows(str(tmp_path / 'gradebook-moodle.csv'))[1][2:] == [
-        '71', 'passed; 2 days late: 20 points off']
+        '80', 'passed; 2 days late: 20 points off']
     again = report.write(str(tmp_path), DOG)        # --report-only: the same, from the records
-    assert again['ann']['score'] == 71
+    assert again['ann']['score'] == 80
 
 
 def test_no_score_stays_none_when_late():

@@ -8,11 +8,11 @@ import os
 import sys
 
 from exp_assignment2.grading.report import gradescope
-from exp_assignment2.grading.plan import profiles
 from exp_assignment2.grading.report import index as report
 from test_grading_report import write_run
+from test_grading_scores import RUBRIC
 
-DOG = profiles.load('dog')
+DOG = RUBRIC        # the marks' mechanics on a rubric of five checks (test_grading_scores)
 # Gradescope's documented fields (gradescope-autograders.readthedocs.io, specs)
 TOP = {'score', 'execution_time', 'output', 'output_format', 'test_output_format',
        'test_name_format', 'visibility', 'stdout_visibility', 'extra_data', 'tests',

@@ -34,8 +34,8 @@ def figures(trace, profile):
 def test_a_dog_that_reaches_the_ball_and_looks_around():
     got = figures(metrics.Trace(dog_states()), DOG)
     assert got['approaches'] == (1, True)
-    assert got['first_approach_time'][0] == 8.0       # within 2.0 m at x = 2.0
-    assert got['head_turn_near_ball'] == (1.6, True)   # -0.8 .. 0.8 rad
+    assert got['first_approach_time'][0] == 3.2       # within 3.2 m at x = 0.8
+    assert got['looks_both_ways'] == (1.0, True)      # -0.8 .. 0.8 rad at the resting ball
     assert got['path_length'] == (2.5, True)
     assert got['python_errors'] == (0, True)
 
@@ -48,7 +48,7 @@ def test_a_dog_that_never_moves():
     assert got['first_approach_time'] == (None, False)
     # no joint at all and nothing the simulator said of the robot: which is the
     # head cannot be told, so the check is not run (test_grading_roles.py has the rest)
-    assert got['head_turn_near_ball'] == (None, None)
+    assert got['looks_both_ways'] == (None, None)
     assert got['path_length'] == (0.0, False)
 
 
@@ -148,7 +148,7 @@ def test_verdicts_tell_causes_apart(tmp_path):
                 ended_by='required_node_died', ended_at=5.0, required_node='dog-5')
     assert (got['verdict'], got['reason']) == (
         'crashed', 'dog-5 died (exit code 1): RuntimeError: the dog has no legs; it was '
-                   'required="true": roslaunch shut its launch down at 5 of 200 simulated s')
+                   'required="true": roslaunch shut its launch down at 5 of 240 simulated s')
     assert got['died'][0]['required'] is True
     # judged on the truth until the crash, so that it keeps the points it earned (scores)
     assert got['checks_until'] == 'crashed' and [c['name'] for c in got['checks']] == [
@@ -160,7 +160,7 @@ def test_verdicts_tell_causes_apart(tmp_path):
     assert got['verdict'] == 'grader_error'
     got = judge('slow', {'logs/command-0.log': ''}, states=dog_states(until=5),
                 ended_by='wall_limit')
-    assert (got['verdict'], got['reason']) == ('timed_out', '5 of 200 simulated s within the '
+    assert (got['verdict'], got['reason']) == ('timed_out', '5 of 240 simulated s within the '
                                                             'wall-clock limit')
     assert got['checks_until'] == 'timed_out' and len(got['checks']) == len(DOG['checks'])
     # the run's own duration (--duration 60), not the profile's
@@ -170,7 +170,9 @@ def test_verdicts_tell_causes_apart(tmp_path):
     got = judge('ok', {'logs/command-0.log': ''}, states=dog_states())
     assert got['verdict'] == 'passed', got
     got = judge('still', {'logs/command-0.log': ''}, states=dog_states(wiggle=0.1))
-    assert (got['verdict'], got['reason']) == ('failed_checks', 'failed: head turns at the ball')
+    assert (got['verdict'], got['reason']) == (
+        'failed_checks', 'failed: head turns both ways at the ball; not judged: follows the '
+                         'moving ball, gives up a hidden ball, sleeps at home, wanders')
 
 
 def test_a_log_written_after_the_end_is_not_read(tmp_path):

@@ -100,8 +100,11 @@ def test_a_renamed_robot_head_and_ball_are_found_by_their_roles():
                               '`camera_link`)')
     assert found.ball.why == ('`toy`: a sphere of radius 0.5 m, moved through /toy/cmd_vel '
                               '(40 commands) (no model `ball`)')
-    assert got == {'approaches': (1, True), 'first_approach_time': (8.0, True),
-                   'head_turn_near_ball': (1.6, True), 'path_length': (2.5, True),
+    # the 30 s gave no sleep, no wander, no moving or hidden ball: those are not judged
+    assert got == {'approaches': (1, True), 'first_approach_time': (3.2, True),
+                   'looks_both_ways': (1.0, True), 'follows_ball': (None, None),
+                   'gives_up_ball': (None, None), 'sleeps': (None, None),
+                   'wanders': (None, None), 'path_length': (2.5, True),
                    'python_errors': (0, True)}
 
 
@@ -115,7 +118,7 @@ def test_the_profiles_names_come_first():
     assert (found.robot.name, found.head.name, found.ball.name) == ('robot', 'joint_head', 'ball')
     assert found.robot.why == '`robot`, as the profile names it'
     assert found.head.why == '`joint_head`, named like `head` as the profile asks'
-    assert got['head_turn_near_ball'] == (1.6, True)
+    assert got['looks_both_ways'] == (1.0, True)
 
 
 def test_the_person_is_not_the_robot_and_the_ball_is_the_sphere():
@@ -135,9 +138,9 @@ def test_a_camera_fixed_to_a_robot_with_no_other_joint_is_no_head():
     trace = trace_of([robot_facts(head_type='fixed'), ball_facts()])
     found, got = outcome(trace)
     assert found.head.name is None and found.head.absent
-    assert got['head_turn_near_ball'] == (None, False)
+    assert got['looks_both_ways'] == (None, False)
     detail = next(c['detail'] for c in metrics.evaluate(trace, DOG, found)
-                  if c['metric'] == 'head_turn_near_ball')
+                  if c['metric'] == 'looks_both_ways')
     assert detail == ('camera `camera1` on `camera_link` is fixed and no joint but the wheels '
                       'moves: `robot2` has no head')
 
@@ -152,15 +155,17 @@ def test_a_head_that_cannot_be_told_is_not_judged_and_its_points_wait_for_a_pers
     found, got = outcome(trace)
     assert found.head.name is None and not found.head.absent
     assert 'which is the head cannot be told' in found.head.why
-    assert got['head_turn_near_ball'] == (None, None)
+    assert got['looks_both_ways'] == (None, None)
     assert got['approaches'] == (1, True)
     checks = metrics.evaluate(trace, DOG, found)
-    head = next(c for c in checks if c['metric'] == 'head_turn_near_ball')
+    head = next(c for c in checks if c['metric'] == 'looks_both_ways')
     assert head['judged'] is False and head['detail'].startswith('not judged: no joint turns')
     marks = scores.run_score({'verdict': 'passed', 'checks': checks}, DOG)
-    assert marks['score'] == 75.0 and marks['pending'] == 25.0
-    assert 'not judged by the grader (head turns at the ball)' in marks['why']
-    head_marks = next(c for c in marks['checks'] if c['name'] == 'head turns at the ball')
+    # the head's 15, and the behaviours the 30 s gave no occasion for (10 each)
+    assert marks['score'] == 45.0 and marks['pending'] == 55.0
+    assert 'not judged by the grader (head turns both ways at the ball, ' in marks['why']
+    head_marks = next(c for c in marks['checks']
+                      if c['name'] == 'head turns both ways at the ball')
     assert head_marks['points'] is None and head_marks['pending']
 
 
@@ -218,7 +223,7 @@ def test_the_teacher_names_what_the_grader_could_not_tell():
     mine = profiles.with_teacher_roles(DOG, {'head': 'flag_joint', 'robot': 'robot2'})
     assert DOG['robot'] == 'robot' and DOG['checks'][2].get('joint') == 'head'   # unchanged
     found, got = outcome(trace, mine)
-    assert found.head.name == 'flag_joint' and got['head_turn_near_ball'] == (1.6, True)
+    assert found.head.name == 'flag_joint' and got['looks_both_ways'] == (1.0, True)
     assert found.head.why == '`flag_joint`, as grading.yaml names it for this submission'
     assert found.robot.why == '`robot2`, as grading.yaml names it for this submission'
 
@@ -251,7 +256,7 @@ def test_an_empty_world_fails_what_needs_a_robot():
     trace = metrics.Trace([{'t': i / 10.0, 'models': {}, 'joints': {}} for i in range(50)])
     found, got = outcome(trace)
     assert found.robot.absent and got['path_length'] == (None, False)
-    assert got['head_turn_near_ball'] == (None, False)
+    assert got['looks_both_ways'] == (None, False)
 
 
 def test_a_joint_named_head_that_does_not_turn_the_camera_is_not_the_head():
@@ -262,7 +267,7 @@ def test_a_joint_named_head_that_does_not_turn_the_camera_is_not_the_head():
         state['joints']['robot2']['head_light'] = 0.0
     trace = metrics.Trace(run, models={'robot2': facts, 'toy': ball_facts()})
     found, got = outcome(trace)
-    assert found.head.name == 'camera_joint' and got['head_turn_near_ball'] == (1.6, True)
+    assert found.head.name == 'camera_joint' and got['looks_both_ways'] == (1.0, True)
 
 
 def test_a_depth_camera_and_a_robot_with_no_drive_plugin():
@@ -299,4 +304,4 @@ def test_a_head_the_teacher_names_that_the_robot_lacks_is_not_judged():
     found, got = outcome(trace, profiles.with_teacher_roles(DOG, {'head': 'neck_yaw'}))
     assert found.head.name is None and not found.head.absent
     assert found.head.why.startswith('grading.yaml names the head `neck_yaw`; `robot2` has no')
-    assert got['head_turn_near_ball'] == (None, None)
+    assert got['looks_both_ways'] == (None, None)

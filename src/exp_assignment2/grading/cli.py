@@ -1,11 +1,12 @@
 """``bash tools/run grade SUBMISSIONS`` (and ``rosrun exp_assignment2 grade.py``):
 every submission of a folder built, run in its sandbox and judged; one report.
 
-    grade SUBMISSIONS [--out DIR] [--jobs K] [--duration S] [--repeat R]
+    grade SUBMISSIONS [--out DIR] [--jobs K] [--duration S] [--repeat R] [--episodes N]
           [--profile dog|miro|FILE] [--real-time-factor F] [--seed N]
           [--only NAME ...] [--scheduler tcp://HOST:PORT] [--report-only]
           [--template DIR ...] [--base-share F] [--similarity-only]
           [--deadline TIME] [--reference DIR ...]
+    grade --calibrate [REF] [--episodes N] [--profile ...] [--out DIR]
 """
 import argparse
 import multiprocessing
@@ -35,8 +36,8 @@ EXIT_OK, EXIT_USAGE, EXIT_CLUSTER, EXIT_NOT_ALL_GRADED = 0, 2, 3, 4
 
 def parse_args(argv):
     parser = argparse.ArgumentParser(prog='tools/run grade', description=__doc__.split('\n')[0])
-    parser.add_argument('submissions', help='a folder of submissions (directories, .zip, '
-                        '.tar.gz, .tgz), or one package directory')
+    parser.add_argument('submissions', nargs='?', help='a folder of submissions (directories, '
+                        '.zip, .tar.gz, .tgz), or one package directory')
     parser.add_argument('--out', help='the report directory (default: ./grading-report)')
     parser.add_argument('--jobs', type=int, help='runs at once (default: as many as keep '
                         'every run at real time on this machine)')
@@ -46,6 +47,12 @@ def parse_args(argv):
     parser.add_argument('--repeat', type=int, default=1, help='runs of each submission, '
                         'with seeds 1..R (default 1)')
     parser.add_argument('--seed', type=int, default=1, help='the first run\'s seed')
+    parser.add_argument('--episodes', type=int, help='runs of each submission, each on its own '
+                        'seed of the course\'s ball when the profile scripts it (default: the '
+                        'seeds its script lists, else 1)')
+    parser.add_argument('--calibrate', nargs='?', const='', metavar='REF',
+                        help='run a reference solution (default: the one this package ships) '
+                        'and write a profile whose thresholds are its figures with margins')
     parser.add_argument('--profile', help='dog, miro, or a profile file (default: '
                         'grading.yaml\'s, else dog)')
     parser.add_argument('--real-time-factor', type=float,
@@ -73,7 +80,9 @@ def parse_args(argv):
             parser.error(str(exc))
     if not 0 < args.base_share <= 1:
         parser.error('--base-share: %r is not a share in (0, 1]' % args.base_share)
-    for name in ('jobs', 'repeat'):
+    if args.submissions is None and args.calibrate is None:
+        parser.error('give a folder of submissions (or --calibrate)')
+    for name in ('jobs', 'repeat', 'episodes'):
         value = getattr(args, name)
         if value is not None and not 1 <= value <= 64:
             parser.error('--%s: %d is not in 1..64' % (name, value))
@@ -130,8 +139,11 @@ def main(argv=None):
     each submission copied once on the teacher's side (plan.copies), the
     report's index written once, after the similarity step."""
     args = parse_args(sys.argv[1:] if argv is None else argv)
-    out = os.path.abspath(args.out) if args.out else default_out(args.submissions)
     log = lambda text: print('[grade] ' + text, file=sys.stderr, flush=True)  # noqa: E731
+    if args.calibrate is not None:      # a reference graded, its figures made a profile
+        from exp_assignment2.grading.plan import calibration
+        return calibration.main(args, main, log)
+    out = os.path.abspath(args.out) if args.out else default_out(args.submissions)
     if args.similarity_only:
         return similarity_only(args, out, log)
     try:

@@ -50,6 +50,8 @@ FIELDS = (
     ('limits', "the sandbox's memory and process limits, as set"),
     ('git', "a git repository's commit graded, how it was chosen, the commits after it, days "
             'late and points off (plan.git_entries.choose)'),
+    ('episode', "which of the submission's episodes it is: index, the scripted ball's seed, "
+                'visibility (plan.episodes), or None'),
     # how it went
     ('started', 'when the run started (epoch s)'),
     ('finished', 'when its record was written (epoch s)'),

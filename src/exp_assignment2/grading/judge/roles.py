@@ -19,7 +19,9 @@ took, times a command placed it, the way it went) are in the run's
   then the nearest the camera);
 * **the camera**: the camera that head turns (or the robot's only one): the
   frames of the record that are shown;
-* **the ball**: the model named in the profile, unless it was never moved
+* **the ball**: the model the course's script moves, where the simulator
+  plays one (its ``scripted`` facts: commands to it are ignored, so it is never
+  "moved"); else the model named in the profile, unless it was never moved
   while another sphere was; else, of the other models that cannot be the
   robot, a sphere of the profile's ``ball_radius`` (one that commands moved
   first), then a model commands moved (a ball server's ``cmd_vel``,
@@ -225,6 +227,14 @@ def find_ball(trace, profile, robot):
     others = [f for f in trace.models.values() if f['name'] != robot.name and not (
         parts.cameras(f) or (parts.drive_topics(f) and f.get('sphere') is None))]
     spheres = [f for f in others if _radius_fits(f.get('sphere'), bounds)]
+    held = sorted(f['name'] for f in others if f.get('scripted'))
+    if held and not _teacher(profile, 'ball'):
+        # the course's script moves it: its commands were ignored, so nothing "moved" it
+        chosen = named if named in held else held[0]
+        seed = (trace.models[chosen]['scripted'] or {}).get('seed')
+        return Role(chosen, '%s: the ball the course\'s script moves (%s)%s' % (
+            _code(chosen), 'seed %s' % seed if seed is not None else 'legs given by hand',
+            '' if chosen == named else ' (no model %s is)' % _code(named) if named else ''))
     if named and trace.seen(named):
         rivals = [f for f in spheres if moved(f['name']) and f['name'] != named]
         if _teacher(profile, 'ball') or moved(named) or not rivals:

@@ -22,6 +22,7 @@ import os
 from exp_assignment2.grading.plan import assignment
 from exp_assignment2.grading.plan import build_deps
 from exp_assignment2.grading.plan import deadlines
+from exp_assignment2.grading.plan import episodes as episodes_
 from exp_assignment2.grading.plan import git_entries
 from exp_assignment2.grading.plan import launch_nodes
 from exp_assignment2.grading.plan import profiles
@@ -260,14 +261,18 @@ def plan(args, out, version, log, read, submissions, copies):
             found, refused = {}, refused or 'the grader failed while reading the submission ' \
                 '(a fault of the grader\'s, not the student\'s): %s' % traceback_line(exc)
         mine = profiles.with_teacher_roles(profile, own.get('roles'))
-        for r in range(args.repeat):
-            specs.append(RunSpec(
-                name=submission.name, path=submission.path, kind=submission.kind,
-                label=submission.name if args.repeat == 1 else '%s-r%d' % (submission.name,
-                                                                             r + 1),
-                seed=args.seed + r, profile=mine, duration=chosen['duration'],
-                real_time_factor=chosen['real_time_factor'], hidden=hidden, version=version,
-                refused=refused, git=git, **found))
+        count = getattr(args, 'episodes', None) or episodes_.default_count(profile)
+        for episode in episodes_.episodes(profile, count, args.seed):
+            for r in range(args.repeat):
+                specs.append(RunSpec(
+                    name=submission.name, path=submission.path, kind=submission.kind,
+                    label=episodes_.label(submission.name, episode, r, count, args.repeat),
+                    seed=args.seed + episode['index'] * args.repeat + r, profile=mine,
+                    duration=chosen['duration'], real_time_factor=chosen['real_time_factor'],
+                    hidden=hidden, version=version, refused=refused, git=git,
+                    episode=episode if count > 1 or profile.get('ball_script') else None,
+                    ball_script=episodes_.ball_script(profile, episode, chosen['duration']),
+                    **found))
     # what the class needs from Debian, installed once, before any run (a run's
     # sandbox never installs; a worker installs what it lacks before its run)
     build_deps.install(sorted({n for spec in specs if not spec.refused for n in spec.debian}),

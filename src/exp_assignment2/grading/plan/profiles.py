@@ -13,15 +13,20 @@ import os
 import yaml
 
 from exp_assignment2.grading.judge.metrics import METRICS
+from exp_assignment2.grading.plan import profile_keys
 from exp_assignment2.grading.paths import PROFILE_DIR
 from exp_assignment2.grading.judge.scores import check_spec
 
 REQUIRED = ('name', 'duration', 'default_commands', 'robot', 'checks')
 KEYS = {'name', 'title', 'duration', 'default_commands', 'world_commands', 'delay', 'cpu_per_run',
         'memory_limit_mb', 'process_limit', 'robot', 'ball', 'ball_radius', 'camera',
-        'record_topics', 'checks', 'assignment', 'releases', 'release'}
-CHECK_KEYS = {'name', 'metric', 'min', 'max', 'reach', 'joint', 'topic', 'tolerance',
-              'points', 'zero', 'visibility'}      # the last three: the rubric (grading.scores)
+        'record_topics', 'checks', 'assignment', 'releases', 'release',
+        # the course's ball and the behaviours' shared settings (profile_keys.py)
+        'base', 'reach', 'home', 'home_radius', 'arena', 'camera_fov',
+        'ball_script'}          # a loaded profile's: what ball's script became
+CHECK_KEYS = {'name', 'metric', 'min', 'max', 'joint', 'topic', 'points', 'zero',
+              'visibility',           # these three: the rubric (grading.scores)
+              'home'} | set(profile_keys.NUMBER_KEYS)       # the metrics' own settings
 DEFAULTS = {'title': '', 'world_commands': [], 'delay': 5, 'cpu_per_run': 1.0,
             'memory_limit_mb': 3000, 'process_limit': 512, 'ball': None, 'ball_radius': None,
             'camera': None, 'record_topics': [],
@@ -30,7 +35,14 @@ DEFAULTS = {'title': '', 'world_commands': [], 'delay': 5, 'cpu_per_run': 1.0,
             'assignment': [],
             # the ROS releases the course allows, and the one a submission that names
             # none is run in first (ros_release.py)
-            'releases': ['noetic'], 'release': None}
+            'releases': ['noetic'], 'release': None,
+            # the script the simulator plays for the ball (None: the student's ball node
+            # moves it), and the settings every check shares (profile_keys.py)
+            'ball_script': None, 'reach': None, 'home': None, 'home_radius': 1.0,
+            'arena': None, 'camera_fov': None}
+
+
+HEAD_METRICS = ('head_turn_near_ball', 'looks_both_ways')     # checks that judge the head
 
 
 class ProfileError(Exception):
@@ -50,28 +62,39 @@ def available():
 
 def load(name_or_path):
     """The profile (a dict with every key), checked; ProfileError saying why not."""
+    path, data = _read(name_or_path)
+    here = os.path.dirname(path)
+    data = profile_keys.merged_with_base(
+        data, lambda base: _read(base, here)[1], os.path.basename(path), ProfileError)
+    return check(data, os.path.basename(path))
+
+
+def _read(name_or_path, here=None):
+    """(path, raw data) of a profile by name (config/grading) or file (relative
+    to ``here``, a profile's folder, for a ``base``)."""
     path = name_or_path
     if not os.path.sep in name_or_path and not name_or_path.endswith(('.yaml', '.yml')):
         path = os.path.join(PROFILE_DIR, name_or_path + '.yaml')
         if not os.path.isfile(path):
             raise ProfileError('no profile %r (there are: %s)'
                                % (name_or_path, ', '.join(available())))
+    elif here and not os.path.isabs(path):
+        path = os.path.join(here, path)
     try:
         with open(path) as f:
-            data = yaml.safe_load(f)
+            return path, yaml.safe_load(f)
     except OSError as exc:
         raise ProfileError('%s: %s' % (path, exc.strerror))
     except yaml.YAMLError as exc:
         raise ProfileError('%s: not YAML: %s' % (path, str(exc).splitlines()[0]))
-    return check(data, os.path.basename(path))
 
 
 def check(data, where='profile'):
     if not isinstance(data, dict):
         raise ProfileError('%s: must be a mapping' % where)
     for key in data:
-        if key not in KEYS:
-            raise _unknown(key, KEYS, where)
+        if key not in KEYS or key == 'base':     # a base is merged before (load)
+            raise _unknown(key, KEYS - {'base'}, where)
     for key in REQUIRED:
         if key not in data:
             raise ProfileError('%s: %s is missing' % (where, key))
@@ -99,6 +122,9 @@ def check(data, where='profile'):
     if not (isinstance(profile['world_commands'], list)
             and all(isinstance(c, str) for c in profile['world_commands'])):
         raise ProfileError('%s: world_commands: a list of command lines' % where)
+    profile['ball'], profile['ball_script'] = profile_keys.parse_ball(
+        profile_keys.ball_of(profile), where, ProfileError)
+    profile_keys.check_shared(profile, where, ProfileError)
     radius = profile['ball_radius']
     if radius is not None and not (
             isinstance(radius, list) and len(radius) == 2 and all(
@@ -120,9 +146,7 @@ def check(data, where='profile'):
                                % (here, item.get('metric'), ', '.join(sorted(METRICS))))
         if 'min' not in item and 'max' not in item:
             raise ProfileError('%s: give a threshold (min or max)' % here)
-        for key in ('min', 'max', 'reach', 'tolerance'):
-            if key in item and (not isinstance(item[key], number) or isinstance(item[key], bool)):
-                raise ProfileError('%s: %s: %r is not a number' % (here, key, item[key]))
+        profile_keys.check_numbers(item, here, ProfileError)
         check_spec(item, here, ProfileError)
         item.setdefault('name', item['metric'])
     return profile
@@ -140,6 +164,6 @@ def with_teacher_roles(profile, roles):
         if roles.get(key):
             mine[key] = roles[key]
     if roles.get('head'):
-        mine['checks'] = [dict(c, joint=roles['head']) if c['metric'] == 'head_turn_near_ball'
+        mine['checks'] = [dict(c, joint=roles['head']) if c['metric'] in HEAD_METRICS
                           else c for c in profile['checks']]
     return mine

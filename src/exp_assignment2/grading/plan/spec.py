@@ -10,7 +10,8 @@ key (:func:`settings`).
 FIELDS = ('name', 'path', 'kind', 'label', 'seed', 'profile', 'duration',
           'real_time_factor', 'hidden', 'version', 'package', 'commands', 'commands_from',
           'readme_commands', 'notes', 'refused', 'packages', 'build', 'debian', 'rejected',
-          'release', 'release_why', 'releases_next', 'starts', 'build_packages', 'git')
+          'release', 'release_why', 'releases_next', 'starts', 'build_packages', 'git',
+          'episode', 'ball_script')
 
 
 class RunSpec(object):
@@ -30,7 +31,10 @@ class RunSpec(object):
     teacher's environment's), ``release_why``, and ``releases_next``: those to run it in when its
     checks fail in this one
     (:mod:`~exp_assignment2.grading.plan.ros_release`); ``git``: the commit a git repository is
-    graded at, and why (:func:`~exp_assignment2.grading.plan.git_entries.choose`), or None."""
+    graded at, and why (:func:`~exp_assignment2.grading.plan.git_entries.choose`), or None;
+    ``episode``: which of the submission's episodes it is (``index``, the ball's ``seed``,
+    ``visibility``) and ``ball_script``: the course the simulator plays for the ball in it
+    (None: the student's ball node moves it; :mod:`~exp_assignment2.grading.plan.episodes`)."""
 
     def __init__(self, **fields):
         unknown = set(fields) - set(FIELDS)
@@ -40,7 +44,8 @@ class RunSpec(object):
                     'commands_from': '', 'readme_commands': [], 'notes': [], 'refused': None,
                     'real_time_factor': 1.0, 'label': None, 'packages': [], 'build': [],
                     'debian': [], 'rejected': None, 'release': None, 'release_why': '',
-                    'releases_next': [], 'starts': [], 'build_packages': [], 'git': None}
+                    'releases_next': [], 'starts': [], 'build_packages': [], 'git': None,
+                    'episode': None, 'ball_script': None}
         for key in FIELDS:
             value = fields.get(key, defaults.get(key))
             setattr(self, key, list(value) if isinstance(value, (list, tuple)) else value)

@@ -13,6 +13,7 @@ import os
 import re
 
 from exp_assignment2.grading.report import commits
+from exp_assignment2.grading.report import evidence
 from exp_assignment2.grading.report import failures as report_failures
 from exp_assignment2.grading.report import judged as report_judged
 from exp_assignment2.grading.report import packages as report_packages
@@ -173,14 +174,20 @@ def page(summary, run, pictures, profile, clean):
                              _e(_number(c.get('max_points'))),
                              report_judged.why_html(clean(c['detail']))))
         parts.append('</table>')
+    hidden = 'hidden' in ((run.get('episode') or {}).get('visibility'), (
+        (pictures.get('evidence') or {}).get('episode') or {}).get('visibility'))
+    if not hidden:      # a hidden episode's seed and pictures are the teacher's
+        parts += evidence.section(pictures.get('evidence'), _inline, {c['name'] for c in shown},
+                                  'When each check was decided', your='your')
     parts += report_judged.judged_section(run, shown, 'What the grader judged')
     parts.append('<h2>How it was started</h2>' + report_starts.table(run, clean))
     parts += report_packages.packages_section(run, clean)
     parts += report_releases.releases_section(run, summary.get('releases'), clean)
     parts += report_failures.keyboard_section(run, clean)
-    pics = [(k, pictures.get(k)) for k in ('top', 'head')] + \
+    pics = [] if hidden else [(k, pictures.get(k)) for k in ('top', 'head')] + \
         list((pictures.get('frames') or {}).items())     # the moments in their order
-    for title, chosen, _ in ((pictures.get('windows') or {}).get('rows') or []):
+    for title, chosen, _ in ((pictures.get('windows') or {}).get('rows') or [] if not hidden
+                             else []):
         pics += [('your window "%s" at %s' % (title, m), p) for m, p in chosen.items() if p]
     pics = [(k, _inline(p)) for k, p in pics if p]
     if pics:

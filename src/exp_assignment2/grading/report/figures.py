@@ -26,7 +26,17 @@ def _segments(points):
     return runs
 
 
-def top_view(trace, roles, path, size=(4.2, 4.2)):
+def robot_at(trace, roles, t):
+    """(x, y) of the robot at the state nearest simulated ``t`` s (None: no pose)."""
+    points = trace.xy(roles.robot.name) if roles.robot.name else []
+    if not points or t is None:
+        return None
+    return min(points, key=lambda p: abs(p[0] - t))[1:]
+
+
+def top_view(trace, roles, path, size=(4.2, 4.2), marks=()):
+    """The arena from above; ``marks``: [(number, t)] of the checks' moments, each a
+    numbered marker where the robot was then."""
     robot = trace.xy(roles.robot.name) if roles.robot.name else []
     ball = trace.xy(roles.ball.name) if roles.ball.name else []
     if not robot and not ball:
@@ -44,11 +54,17 @@ def top_view(trace, roles, path, size=(4.2, 4.2)):
         data = msg.get('data') if isinstance(msg, dict) else None
         if isinstance(data, list) and len(data) >= 2:
             ax.plot(data[0], data[1], 'x', color='#1f77b4', ms=6)
+    for number, t in marks:
+        where = robot_at(trace, roles, t)
+        if where:
+            ax.plot(where[0], where[1], 'o', ms=11, mfc='#ffeb3b', mec='#333', zorder=5)
+            ax.annotate(str(number), where, ha='center', va='center', fontsize=7, zorder=6)
     ax.set_aspect('equal', adjustable='datalim')
     ax.grid(True, lw=0.3)
     ax.set_xlabel('x (m)')
     ax.set_ylabel('y (m)')
-    ax.set_title('from above: o start, \u25a0 end', fontsize=9)
+    ax.set_title('from above: o start, \u25a0 end%s' % (
+        ', numbers: the checks\' moments' if marks else ''), fontsize=9)
     ax.legend(loc='best', fontsize=8)
     fig.tight_layout()
     fig.savefig(path)
@@ -98,14 +114,12 @@ def frame_time(path):
         return None
 
 
-def chosen_frames(record_dir, trace, roles):
-    """{moment: frame file} of the robot's camera for the first sight of the ball,
-    the closest approach and the end, in that order (frames:
-    ``record/frames/<camera>_<t>.jpg``, ``<camera>`` the model's and camera's
-    names; every camera's when the robot's cannot be told)."""
+def camera_frames(record_dir, roles):
+    """[(t, frame file)] of the robot's camera, in time order (``record/frames/<camera>_<t>.jpg``,
+    ``<camera>`` the model's and camera's names; every camera's when the robot's cannot be told)."""
     directory = os.path.join(record_dir, 'frames')
     if not os.path.isdir(directory):
-        return {}
+        return []
     prefix = roles.camera.name.replace('/', '_') + '_' if roles.camera.name else ''
     frames = []
     for name in sorted(os.listdir(directory)):
@@ -114,9 +128,25 @@ def chosen_frames(record_dir, trace, roles):
         if t is not None and name.startswith(prefix) and \
                 not (prefix and '_' in name[len(prefix):]):
             frames.append((t, os.path.join(directory, name)))
+    return sorted(frames)
+
+
+def frame_at(frames, t, within=2.0):
+    """The frame file of ``frames`` ([(t, file)]) nearest ``t`` s, if one is within ``within`` s."""
+    if not frames or t is None:
+        return None
+    near = min(frames, key=lambda f: abs(f[0] - t))
+    return near[1] if abs(near[0] - t) <= within else None
+
+
+def chosen_frames(record_dir, trace, roles):
+    """{moment: frame file} of the robot's camera for the first sight of the ball,
+    the closest approach and the end, in that order (frames:
+    ``record/frames/<camera>_<t>.jpg``, ``<camera>`` the model's and camera's
+    names; every camera's when the robot's cannot be told)."""
+    frames = camera_frames(record_dir, roles)
     if not frames:
         return {}
-    frames.sort()
     chosen = {}
     if roles.ball.name:
         from exp_assignment2.vision import BallDetector

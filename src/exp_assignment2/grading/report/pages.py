@@ -12,6 +12,7 @@ from exp_assignment2.grading.judge import metrics
 from exp_assignment2.grading.judge import roles as roles_
 from exp_assignment2.grading.judge.logs import read_log
 from exp_assignment2.grading.report import commits as report_commits
+from exp_assignment2.grading.report import evidence
 from exp_assignment2.grading.report import failures as report_failures
 from exp_assignment2.grading.report import figures
 from exp_assignment2.grading.report import judged as report_judged
@@ -44,7 +45,10 @@ def pictures(run, runs_dir, img_dir, profile):
     roles = roles_.of_run(run, trace, profile)
     label = run['label']
     pictures = {}
-    top = figures.top_view(trace, roles, os.path.join(img_dir, label + '_top.png'))
+    shown = evidence.pictures(record_dir, trace, roles, run, img_dir)     # the checks' moments
+    pictures['evidence'] = shown
+    top = figures.top_view(trace, roles, os.path.join(img_dir, label + '_top.png'),
+                           marks=[(m[0], m[2]) for m in shown['moments']])
     if top:
         pictures['top'] = top
     head = figures.head_angle(trace, roles, os.path.join(img_dir, label + '_head.png'))
@@ -105,6 +109,10 @@ def page(summary, runs, runs_dir, pictures, profile):
                              report_marks.points_cell(check),
                              report_judged.why_html(check['detail'])))
         parts.append('</table>')
+    episodes = evidence.episodes_sentence(runs)
+    if episodes:
+        parts.append('<p>%s.</p>' % _e(episodes))
+    parts += evidence.section(pictures.get('evidence'), rel)
     parts += report_judged.judged_section(main, profile['checks'])
     if pictures.get('top') or pictures.get('head'):
         parts.append('<h2>What happened</h2><p>')

@@ -30,6 +30,7 @@ from exp_assignment2.original_env import environment as original_env
 from exp_assignment2.launch_surface.viewer import FRAME_RATE_ENV as VIEWER_FRAME_RATE_ENV
 from exp_assignment2.sim.ground_truth import SOCKET_ENV, TOPICS_ENV
 from exp_assignment2.sim.releases import ENV as RELEASE_ENV
+from exp_assignment2.sim.ball_setting import ENV as BALL_SCRIPT_ENV
 
 # the environment a run starts with (the sandbox's is cleared)
 PASSED_ENV = ('PATH', 'LANG', 'LC_ALL', 'EXP2_WS', 'EXP2_TEST_JOBS', 'EXP2_ROS_RELEASE')
@@ -120,6 +121,8 @@ class Run(object):
         })
         if self.spec.release:       # the release the student wrote for (ros_release.py)
             env[RELEASE_ENV] = self.spec.release
+        if self.spec.ball_script:   # the course's ball, the same for everyone (episodes.py)
+            env[BALL_SCRIPT_ENV] = json.dumps(self.spec.ball_script)
         env['PATH'] = '/usr/bin:/bin:/usr/sbin:/sbin'
         # the original-code shell writes its python launchers into the workspace:
         # a directory of the run's own is shown there (made once, outside, as
@@ -143,7 +146,8 @@ class Run(object):
             started=time.time(),
             commands=list(spec.commands), commands_from=spec.commands_from,
             notes=list(spec.notes), readme_commands=list(spec.readme_commands),
-            packages=list(spec.packages), release=spec.release, release_why=spec.release_why)
+            packages=list(spec.packages), release=spec.release, release_why=spec.release_why,
+            episode=spec.episode)
         if spec.git:        # the commit a git repository is graded at (git_entries.py)
             result['git'] = spec.git
         try:

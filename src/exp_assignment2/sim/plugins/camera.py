@@ -116,9 +116,11 @@ class CameraPlugin(Plugin):
                                                  self.engine))
 
     def facts(self):
-        """Its sensor, with the name its frames carry (``<model>/<cameraName>``) and
-        its compressed topic."""
-        return dict(Plugin.facts(self), camera=self.spec.name, image=self.jpeg.pub.resolved_name)
+        """Its sensor, with the name its frames carry (``<model>/<cameraName>``), its
+        compressed topic, and its horizontal field of view (rad) and width (px): what
+        the grader tells the ball in view by."""
+        return dict(Plugin.facts(self), camera=self.spec.name, image=self.jpeg.pub.resolved_name,
+                    hfov=round(math.radians(self.spec.hfov), 4), width=self.spec.width)
 
     def _watch(self):
         if self.on_subscribed is not None and self.wanted():
