@@ -1,12 +1,12 @@
-"""Gazebo's user camera: where gzclient's window looks from as it starts (no ROS).
+"""Gazebo's user camera: where Gazebo's window looks from (no ROS).
 
 In the grader, Gazebo's window is drawn by the simulator's own renderer
-(:mod:`exp_assignment2.ros.gui_view`) from a fixed camera, as gzclient showed
-a world before anyone moved its view: Gazebo's default pose (5, -5, 2), pitched
-0.28 rad down, yaw 135 degrees, looking at the origin, for a world without bounds
-(an SDF world); a world with bounds (the package's arenas) is seen whole from
-the same side, farther back and higher up, so that the pages' pictures show
-every model in it.
+(:mod:`exp_assignment2.ros.gui_view`) from a fixed camera over the world, from
+the (+x, -y) side as Gazebo's default user camera (5, -5, 2, yaw 135 degrees)
+looks, but farther back and higher up, so that the pages' pictures show
+every model in it: a world with bounds (the package's arenas) whole, a world
+without (an SDF world: Gazebo's empty world with the course's robot and ball)
+the 16 m square about its origin where the course's ball goes.
 """
 import math
 
@@ -16,7 +16,7 @@ from exp_assignment2.sim.camera import CameraSpec
 from exp_assignment2.sim.urdf import rpy_matrix
 
 WIDTH, HEIGHT, HFOV = 960, 720, 60.0
-GAZEBO_DEFAULT = (5.0, -5.0, 2.0, 0.0, 0.275643, 2.35619)    # Gazebo's <gui><camera> default
+UNBOUNDED = (-8.0, 8.0, -8.0, 8.0)     # what is seen of a world without bounds
 PITCH = 0.75                # rad down, over a bounded world
 MARGIN = 1.3                # the world's width times this fills the picture
 
@@ -25,7 +25,7 @@ def pose(bounds):
     """(x, y, z, roll, pitch, yaw) of the user camera for a world's bounds
     ((x_min, x_max, y_min, y_max), infinite for none)."""
     if not all(math.isfinite(b) for b in bounds):
-        return GAZEBO_DEFAULT
+        bounds = UNBOUNDED
     x_min, x_max, y_min, y_max = bounds
     cx, cy = (x_min + x_max) / 2.0, (y_min + y_max) / 2.0
     # seen from the (+x, -y) corner, as Gazebo's default: the world's diagonal across
