@@ -11,7 +11,6 @@ still opens rviz, and this topic is not even advertised then.
 """
 import copy
 
-import rospy
 from sensor_msgs.msg import Image
 from std_msgs.msg import Header
 
