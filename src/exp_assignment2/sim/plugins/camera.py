@@ -115,6 +115,7 @@ class CameraPlugin(Plugin):
             self.pace = FramePace(PACE_WINDOW, log=self.engine.log)
             self.done_sub = subscribe(base + '/frame_done', Header, self._on_done, queue_size=10)
         self.sent = {}      # publishing thread: this frame's JPEG and raw Image
+        self.frames = [0, 0]    # frames drawn, frames of a still scene sent again
         self.worker = shared_worker(self.engine)
 
     def facts(self):
@@ -152,6 +153,7 @@ class CameraPlugin(Plugin):
         scene is the last frame's, whose JPEG and raw bytes go out again with
         this stamp (the same bytes the encoder would make of the same pixels)."""
         header = Header(stamp=when, frame_id=self.frame_id)
+        self.frames[same] += 1
         if not same:
             self.sent = {}      # the bytes made of this frame, per stream
         if self.jpeg.wanted:
@@ -182,6 +184,9 @@ class CameraPlugin(Plugin):
         if self.done_sub is not None:
             self.done_sub.unregister()
         self.worker.drain()
+        if sum(self.frames):
+            self.engine.log.info('camera %s: %d frames, %d of them of a still scene (not drawn '
+                                 'again)' % (self.spec.name, sum(self.frames), self.frames[1]))
         for watched in (self.jpeg, self.raw, self.info_pub):
             watched.pub.unregister()
 
