@@ -19,6 +19,7 @@ from exp_assignment2.grading.report import gradebook
 from exp_assignment2.grading.report import index as report
 from exp_assignment2.grading.report import resumed as report_resumed
 from exp_assignment2.grading.run import tasks
+from exp_assignment2.grading.run.admission import Admission
 from exp_assignment2.grading.run.cluster import Cluster, ClusterError
 from exp_assignment2.grading.run.dispatch import grade
 from exp_assignment2.grading.run.resume import Resume
@@ -39,8 +40,9 @@ def parse_args(argv):
     parser.add_argument('submissions', nargs='?', help='a folder of submissions (directories, '
                         '.zip, .tar.gz, .tgz), or one package directory')
     parser.add_argument('--out', help='the report directory (default: ./grading-report)')
-    parser.add_argument('--jobs', type=int, help='runs at once (default: as many as keep '
-                        'every run at real time on this machine)')
+    parser.add_argument('--jobs', type=int, help='the most runs at once (default: %d a '
+                        'core); how many do run at once is what their measured cost lets the '
+                        'cores keep at real time' % RUNS_PER_CORE)
     # None: not given, so grading.yaml's value, else the profile's, holds (spec.settings)
     parser.add_argument('--duration', type=float, help='simulated s a run lasts '
                         '(default: grading.yaml\'s, else the profile\'s)')
@@ -96,9 +98,23 @@ def parse_args(argv):
     return args
 
 
-def default_jobs(profile):
-    """As many runs as the cores keep at real time (the profile's measured cost)."""
-    return max(1, int(multiprocessing.cpu_count() // float(profile['cpu_per_run'])))
+# the most runs at once by default, a core: a run costs more than a quarter of
+# one (the simulator, the display and ROS alone); how many do run at once is
+# what their measured cost lets the cores keep at real time (run.admission)
+RUNS_PER_CORE = 4
+
+
+def most_jobs(args):
+    """The most runs at once on this machine: ``--jobs``, else RUNS_PER_CORE a core."""
+    return args.jobs or RUNS_PER_CORE * multiprocessing.cpu_count()
+
+
+def admission(args, profile, runs):
+    """When each run may start (run.admission): on this machine, when the cores
+    its measured cost needs are free; on a Dask scheduler's workers, as they take them."""
+    if args.scheduler:
+        return Admission(None, profile['cpu_per_run'], len(runs))
+    return Admission(multiprocessing.cpu_count(), profile['cpu_per_run'], most_jobs(args))
 
 
 def plan_runs(args, out, log, read, submissions, copies):
@@ -170,7 +186,7 @@ def _grade(args, out, log, read, submissions, copies):
         log('nothing to grade')
         return EXIT_USAGE
     os.makedirs(os.path.join(out, 'runs'), exist_ok=True)
-    jobs = args.jobs or default_jobs(profile)
+    jobs, admitting = most_jobs(args), admission(args, profile, runs)
     try:
         cluster = Cluster(args.scheduler, jobs=jobs, log=log)
     except ClusterError as exc:
@@ -178,13 +194,16 @@ def _grade(args, out, log, read, submissions, copies):
         return EXIT_CLUSTER
     log('%d runs of %d submissions, %s, %g simulated s each, profile %s; report: %s'
         % (len(runs), len({r.submission.name for r in runs}),
-           'on the workers of ' + args.scheduler if args.scheduler else '%d at once' % jobs,
-           runs[0].settings.duration, profile['name'], out))
+           'on the workers of ' + args.scheduler if args.scheduler else
+           '%d at once to start with, as many as their measured cost lets %d cores keep at '
+           'real time from then on (at most %d)' % (
+               admitting.most_at_once(runs[0].settings.real_time_factor),
+               admitting.cores, jobs), runs[0].settings.duration, profile['name'], out))
     progress = Progress(len(runs), jobs, extra=lambda: '%d workers' % cluster.worker_count())
     resume = Resume(os.path.join(out, 'runs'), copies, log)
     with Stopping() as stopping:
         try:
-            stopped = grade(runs, cluster, progress, copies, stopping, resume)
+            stopped = grade(runs, cluster, progress, copies, stopping, resume, admitting)
         except KeyboardInterrupt:
             stopped = [r for r in runs if r.state != 'done']
             stopping.asked = stopping.asked or 1

@@ -7,8 +7,6 @@ and TF), fed by ``gzclient`` with one TF frame per model and per link of
 ``gazebo/<model>/<link>``, children of ``world``. Prefixed, they can never
 clash with the frames of the user's own TF tree.
 """
-import re
-
 WORLD_FRAME = 'world'
 PREFIX = 'gazebo/'
 # frames a second the viewer draws where nobody watches it live (the grader's
@@ -29,12 +27,6 @@ def frame_rate(environ):
     except ValueError:
         return None
     return rate if 0 < rate <= 60 else None
-
-
-def with_frame_rate(config_text, rate):
-    """An rviz config's text with its global ``Frame Rate`` set to ``rate``."""
-    return re.sub(r'(?m)^(\s*Frame Rate:\s*)\S+', lambda m: m.group(1) + '%g' % rate,
-                  config_text)
 
 
 def frame_name(state_name):

@@ -21,10 +21,12 @@ from rosgraph_msgs.msg import Clock
 
 from exp_assignment2.ros.gazebo_state import GazeboState
 from exp_assignment2.ros.gazebo_world import GazeboWorld
+from exp_assignment2.ros.gui_view import GuiView
 from exp_assignment2.ros import grader_link
 from exp_assignment2.ros import steady_publishing
 from exp_assignment2.ros.log import RosLog
 from exp_assignment2.ros.world_markers import WorldMarkers
+from exp_assignment2.launch_surface import viewer
 from exp_assignment2.sim import ball_setting, releases
 from exp_assignment2.sim.engine import Engine
 from exp_assignment2.sim.plugins import registry
@@ -134,7 +136,7 @@ class SimulatorNode(object):
         except ValueError:
             self.engine.close()
             raise
-        self.world = self.state = self.markers = None
+        self.world = self.state = self.markers = self.gui_view = None
         if p['enable_ros_network']:
             self.world = GazeboWorld(self.engine, sdf_to_urdf=sdf_to_urdf)
             self.state = GazeboState(self.engine, self.world)
@@ -142,6 +144,10 @@ class SimulatorNode(object):
             # gzclient shows it; the package's worlds in odom, as its rviz configs
             self.markers = WorldMarkers(self.engine,
                                         'world' if p['world_file'] is not None else 'odom')
+            # a display nobody watches (the grader's): Gazebo's window drawn here
+            rate = viewer.frame_rate(os.environ)
+            if rate is not None:
+                self.gui_view = GuiView(self.engine, rate)
         else:       # as gazebo_ros: none of its services or topics; /clock goes on
             rospy.loginfo('simulator: enable_ros_network is false: no /gazebo services '
                           'or topics, only /clock')
@@ -237,7 +243,7 @@ class SimulatorNode(object):
     def close(self):
         if self.truth is not None:
             self.truth.link.close()
-        for interface in (self.state, self.world):
+        for interface in (self.gui_view, self.state, self.world):
             if interface is not None:
                 interface.close()
         self.engine.close()

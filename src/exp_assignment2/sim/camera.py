@@ -32,11 +32,13 @@ class CameraSpec(object):
     """A pinhole camera (see the module docstring).
 
     :param offset: (x, y, z, roll, pitch, yaw) of the sensor in its link's frame
+    :param world_pose: a 4x4 world pose for a camera on no link (Gazebo's user
+        camera, :mod:`~exp_assignment2.sim.user_camera`); model and link None
     """
 
     def __init__(self, model, link, name='camera1', width=320, height=240, rate=30.0,
                  hfov=60.0, near=0.1, far=100.0, image_format='R8G8B8', jpeg_quality=80,
-                 offset=(0, 0, 0, 0, 0, 0)):
+                 offset=(0, 0, 0, 0, 0, 0), world_pose=None):
         self.model, self.link, self.name = model, link, name
         self.width, self.height = int(width), int(height)
         self.rate, self.hfov = float(rate), float(hfov)
@@ -54,6 +56,7 @@ class CameraSpec(object):
         self.offset = np.eye(4)
         self.offset[:3, :3] = rpy_matrix(*offset[3:])
         self.offset[:3, 3] = offset[:3]
+        self.world_pose = None if world_pose is None else np.asarray(world_pose, float)
 
     @property
     def focal(self):
@@ -71,7 +74,9 @@ class CameraSpec(object):
         return math.degrees(2.0 * math.atan(math.tan(math.radians(self.hfov) / 2.0) / aspect))
 
     def frame(self, link_frame):
-        """4x4 world pose of the sensor, given its link's."""
+        """4x4 world pose of the sensor, given its link's (None for a camera on no link)."""
+        if self.world_pose is not None:
+            return self.world_pose
         return np.asarray(link_frame, float).dot(self.offset)
 
 
@@ -91,8 +96,11 @@ class PybulletRenderer(object):
         pass
 
     def matrices(self, camera):
-        models = {m.name: m for m in self.source.scene()[1]}
-        frame = camera.frame(pose_matrix(*models[camera.model].link_pose(camera.link)))
+        link = None
+        if camera.world_pose is None:
+            models = {m.name: m for m in self.source.scene()[1]}
+            link = pose_matrix(*models[camera.model].link_pose(camera.link))
+        frame = camera.frame(link)
         pos, rot = frame[:3, 3], frame[:3, :3]
         view = p.computeViewMatrix(pos.tolist(), (pos + rot[:, 0]).tolist(), rot[:, 2].tolist())
         proj = p.computeProjectionMatrixFOV(camera.vertical_fov(),

@@ -142,10 +142,12 @@ class Cluster(object):
             return self._submit(payload, data)
 
     def _submit(self, payload, data):
+        attempt = payload.get('attempt') or 1      # a starved run is sent again
         return self.client.submit(_task, payload, data, self.token, resources={'runs': 1},
                                   pure=False, workers=self.workers,
-                                  allow_other_workers=False, key='grade-%s-%s' % (
-                                      payload['label'], self.token))
+                                  allow_other_workers=False, key='grade-%s-%s%s' % (
+                                      payload['label'], self.token,
+                                      '-%d' % attempt if attempt > 1 else ''))
 
     def poll_starts(self):
         """Read the start announcements (what runs where, and which started again)."""
@@ -182,20 +184,25 @@ class Cluster(object):
                 self.local.close()
 
 
-def payload(run, version, copies):
+def payload(run, version, copies, attempt=1):
     """What a task needs to run one Run anywhere (see tasks.run_task): its
     specification as a plain dict, and the submission's bytes (packed from
-    its copy in ``copies``, plan.copies.Copies)."""
+    its copy in ``copies``, plan.copies.Copies); ``attempt`` 2 for a run
+    sent again (run.admission: starved)."""
     kind, data = tasks.pack_submission(run.submission, copies)
     return {'spec': run.spec.to_dict(), 'packed_kind': kind, 'data': data,
-            'label': run.label, 'version': version}
+            'label': run.label, 'version': version, 'attempt': attempt}
 
 
 def _planned(run, teacher):
     """The teacher's part ``teacher``, with what the run was planned from
-    (run.resume) when the teacher's side said it."""
+    (run.resume) when the teacher's side said it, and the teacher's side's
+    notes on it (why it was run again)."""
     if run.planned is not None:
         teacher['planned'] = run.planned
+    notes = list(getattr(run, 'notes', None) or [])
+    if notes:
+        teacher['notes'] = notes + list(teacher.get('notes') or [])
     return teacher
 
 
@@ -207,10 +214,11 @@ def unpack_result(outcome, run, started):
     if own is None:
         raise ValueError('its worker sent back no record')
     workers = started.get(run.label) or []
-    teacher = _planned(run, {'workers': workers})
+    teacher = {'workers': workers}
     if len(workers) > 1:
         teacher['notes'] = ['run again: its worker %s was lost in the middle of the run; '
                             'done on %s' % (', '.join(workers[:-1]), workers[-1])]
+    teacher = _planned(run, teacher)
     if outcome.get('cut'):
         teacher['cut'] = list(outcome['cut'])
     result = record.write(run.record, own, teacher=teacher)     # its run.json last

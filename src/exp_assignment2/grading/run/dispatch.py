@@ -1,6 +1,8 @@
 """The grading's runs sent to the cluster and received on the teacher's side
 (no ROS): each run a Dask task, or, when it cannot be sent (refused,
-rejected, not sendable), its record made here; each run that comes back
+rejected, not sendable), its record made here; each sent when the cores
+it needs are free (run.admission), a starved one again after the others;
+each run that comes back
 unpacked with the teacher's part of its record, or lost; a run whose checks
 failed in a release it was not told run again in the next; a run a
 resumed grading keeps (run.resume) not sent at all; Ctrl-C (run.stopping).
@@ -10,6 +12,7 @@ import shutil
 from exp_assignment2.grading import record
 from exp_assignment2.grading.plan.spec import RunSpec
 from exp_assignment2.grading.run import tasks
+from exp_assignment2.grading.run.admission import STARVED_NOTE, Admission, starved
 from exp_assignment2.grading.run.cluster import lost_result, not_run, payload, unpack_result
 from exp_assignment2.grading.run.runner import Run
 from exp_assignment2.grading.run.stopping import NO_NEW, Stopping
@@ -34,27 +37,44 @@ def in_next_release(run):
     return Run(run.settings, RunSpec.from_dict(data))
 
 
-def grade(runs, cluster, progress, copies, stopping=None, resume=None):
+def grade(runs, cluster, progress, copies, stopping=None, resume=None, admission=None):
     """Every Run as a Dask task (its submission packed from its copy in
     ``copies``), but those ``resume`` keeps (run.resume: a finished run of
-    the same plan); ``stopping`` (run.stopping) says when the teacher stops
-    it: once, no new run starts and the running ones are received; twice,
-    they end now and are not kept. Returns the runs not run ([] when the
-    grading went to its end)."""
+    the same plan), each sent when ``admission`` (run.admission) lets it
+    start, and a starved one sent again once the others are done;
+    ``stopping`` (run.stopping) says when the teacher stops it: once, no new
+    run starts and the running ones are received; twice, they end now and
+    are not kept. Returns the runs not run ([] when the grading went to its end)."""
     from distributed import wait
     stopping = stopping or Stopping()
+    admission = admission or Admission(None, 1.0, len(runs) or 1)
     futures, todo = {}, []     # future -> its run; the runs run now (the progress line's)
+    queued, starved_runs = [], []   # runs to send when admitted; starved ones, after the others
 
-    def send(run):
+    def send(run, attempt=1):
         """The run as a Dask task (its future), or its grader_error (None)."""
         try:
-            future = cluster.submit(payload(run, cluster.version, copies))
+            future = cluster.submit(payload(run, cluster.version, copies, attempt))
         except Exception as exc:      # noqa: BLE001 -- the grader's fault, this run's only
             not_run(run, grader_fault=record.fault('could not send it to a worker', exc))
             return None
         futures[future] = run
         pending.add(future)
+        admission.started(run.label, run.settings.real_time_factor)
         return future
+
+    def admit():
+        """Send what may start now: the queued runs in turn, then, once
+        nothing else runs or waits, the starved ones, one at a time."""
+        while queued and not stopping.asked and \
+                admission.may_start(queued[0].settings.real_time_factor):
+            send(queued.pop(0))
+        if starved_runs and not queued and not pending and not stopping.asked:
+            run, factor = starved_runs.pop(0)
+            cluster.started.pop(run.label, None)    # its workers: this attempt's
+            run.notes = [STARVED_NOTE % factor]
+            run.state = 'waiting'
+            send(run, attempt=2)
 
     def start(run):
         """The run kept, or decided here (refused, rejected), or sent."""
@@ -69,10 +89,14 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None):
         elif run.spec.rejected:    # nothing to run: it does not unpack, it holds no package
             not_run(run, rejected=run.spec.rejected)
         else:
-            send(run)
+            queued.append(run)
 
     def receive(run, future):
         _received(run, future, cluster)
+        if admission.ended(run.label, run.result) and run.state == 'done' and \
+                not run.notes and not stopping.asked:
+            starved_runs.append((run, starved(run.result)))
+            return          # followed once run again
         if run.state == 'done':
             follow(run)
 
@@ -93,6 +117,7 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None):
         resume.say()
     progress.total = len(todo)
     noticed = 0
+    admit()
     try:
         while pending:
             if stopping.asked > noticed:
@@ -100,6 +125,9 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None):
                     for future in cluster.stop_starting({f: futures[f].label for f in pending}):
                         pending.discard(future)
                         futures[future].state = 'stopped'
+                    for run in queued:
+                        run.state = 'stopped'
+                    del queued[:], starved_runs[:]    # a starved run keeps its first record
                 noticed = stopping.asked
                 if noticed == NO_NEW:
                     progress.line('Ctrl-C: no new run starts; the running ones (%d) finish '
@@ -114,6 +142,7 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None):
             for future in [f for f in pending if f.done()]:
                 pending.discard(future)
                 receive(futures[future], future)
+            admit()
             for future in pending:
                 run = futures[future]
                 if run.label in cluster.started and run.state == 'waiting':

@@ -69,6 +69,7 @@ class Run(object):
         self.news = threading.Event()       # the driver said something (monitor.watch)
         self.result = None
         self.planned = None     # what the teacher's side planned it from (run.resume)
+        self.notes = []         # the teacher's side's on it: why it was run again (run.admission)
 
     # the run's files
     def _fresh_dirs(self):

@@ -21,7 +21,10 @@ captures a frame (pybullet calls) and hands it to one worker thread, shared
 by every camera, that renders (``gl``), converts and encodes it, so that work
 overlaps the next physics steps. The hand-over holds one frame: when the
 worker is behind, the simulator waits rather than drop or queue frames, so
-the rate in simulated time stays exact.
+the rate in simulated time stays exact. A frame whose scene did not move
+since the camera last drew (robot, head and ball still: ``gl``'s capture
+compares every link's pose) is not drawn or encoded again: the last frame's
+JPEG and raw bytes are published again with the new stamp.
 """
 import copy
 import math
@@ -33,7 +36,7 @@ from std_msgs.msg import Header
 from exp_assignment2.sim.camera import CameraSpec
 from exp_assignment2.sim.pacing import FramePace
 from exp_assignment2.sim.plugins.base import Plugin, PluginError
-from exp_assignment2.sim.plugins.frame_worker import FrameWorker
+from exp_assignment2.sim.plugins.frame_worker import shared_worker
 from exp_assignment2.sim.plugins.cores import Every
 from exp_assignment2.sim.plugins.ros_io import Watched, stamp, subscribe
 from exp_assignment2.vision import encode_jpeg
@@ -111,9 +114,9 @@ class CameraPlugin(Plugin):
         if self.engine.settings.get('frame_pace'):
             self.pace = FramePace(PACE_WINDOW, log=self.engine.log)
             self.done_sub = subscribe(base + '/frame_done', Header, self._on_done, queue_size=10)
-        self.worker = self.engine.shared(
-            'camera.worker', lambda: FrameWorker(self.engine.settings.get('renderer', 'gl'),
-                                                 self.engine))
+        self.sent = {}      # publishing thread: this frame's JPEG and raw Image
+        self.frames = [0, 0]    # frames drawn, frames of a still scene sent again
+        self.worker = shared_worker(self.engine)
 
     def facts(self):
         """Its sensor, with the name its frames carry (``<model>/<cameraName>``), its
@@ -147,14 +150,25 @@ class CameraPlugin(Plugin):
         elif self.info_pub.wanted:
             self._publish_info(when)
 
-    def publish(self, when, bgr):
-        """Encode and publish a finished frame (worker thread)."""
+    def publish(self, when, bgr, same=False):
+        """Encode and publish a finished frame (worker thread). ``same``: its
+        scene is the last frame's, whose JPEG and raw bytes go out again with
+        this stamp (the same bytes the encoder would make of the same pixels)."""
         header = Header(stamp=when, frame_id=self.frame_id)
+        self.frames[same] += 1
+        if not same:
+            self.sent = {}      # the bytes made of this frame, per stream
         if self.jpeg.wanted:
+            if 'jpeg' not in self.sent:
+                self.sent['jpeg'] = encode_jpeg(bgr, self.spec.jpeg_quality)
             self.jpeg.pub.publish(CompressedImage(header=header, format=JPEG_FORMAT,
-                                                  data=encode_jpeg(bgr, self.spec.jpeg_quality)))
+                                                  data=self.sent['jpeg']))
         if self.raw.wanted:
-            self.raw.pub.publish(raw_image(header, bgr, self.spec.encoding))
+            if 'raw' not in self.sent:
+                self.sent['raw'] = raw_image(header, bgr, self.spec.encoding)
+            image = copy.copy(self.sent['raw'])
+            image.header = header
+            self.raw.pub.publish(image)
         self._publish_info(when)
         self.engine.frame_drawn('%s/%s' % (self.model.name, self.spec.name), when.to_sec(), bgr)
 
@@ -172,6 +186,9 @@ class CameraPlugin(Plugin):
         if self.done_sub is not None:
             self.done_sub.unregister()
         self.worker.drain()
+        if sum(self.frames):
+            self.engine.log.info('camera %s: %d frames, %d of them of a still scene (not drawn '
+                                 'again)' % (self.spec.name, sum(self.frames), self.frames[1]))
         for watched in (self.jpeg, self.raw, self.info_pub):
             watched.pub.unregister()
 

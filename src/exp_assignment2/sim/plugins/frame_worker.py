@@ -3,7 +3,9 @@ The first draws (with ``gl`` it owns the renderer's GL context), the second
 encodes and publishes, so that a frame is drawn while the one before it is
 encoded: both wait outside Python's GIL (Mesa's rasteriser, libjpeg). Each
 hand-over holds one frame, so a simulator that is ahead waits instead of
-dropping or queueing frames."""
+dropping or queueing frames. A frame whose scene did not change (the
+backend's ``Still`` job) goes through both in its turn, undrawn: the camera
+publishes its last frame's bytes again (``publish(when, image, same)``)."""
 import queue
 import threading
 import time
@@ -60,8 +62,10 @@ class FrameWorker(object):
                     self.drawn.put(None)
                     break
                 camera, when, job = item
-                self.drawn.put((camera, when, self.backend.finish(job)))
+                self.drawn.put((camera, when, self.backend.finish(job),
+                                getattr(job, 'same', False)))
             except FRAME_ERRORS as exc:     # a bad frame must not stop the camera
+                self._forget(item)
                 self._dropped(exc)
             finally:
                 self.jobs.task_done()
@@ -73,8 +77,8 @@ class FrameWorker(object):
             try:
                 if item is None:
                     break
-                camera, when, image = item
-                camera.publish(when, image)
+                camera, when, image, same = item
+                camera.publish(when, image, same)
             except Exception as exc:
                 # whatever the camera's transport raises (rospy: a topic closed
                 # by the shutdown under way): were this thread to end, the
@@ -83,6 +87,12 @@ class FrameWorker(object):
                 self._dropped(exc)
             finally:
                 self.drawn.task_done()
+
+    def _forget(self, item):
+        """A frame not drawn: the camera's next one is drawn, whatever it shows."""
+        forget = getattr(self.backend, 'forget', None)
+        if forget is not None and item:
+            forget(getattr(item[0], 'spec', item[0]))
 
     def _dropped(self, exc):
         if time.monotonic() - self._last_error > 10.0:
@@ -107,3 +117,10 @@ class FrameWorker(object):
         elif self.publisher.is_alive():
             self.drawn.put(None)
         self.publisher.join(5.0)
+
+
+def shared_worker(engine):
+    """The engine's one :class:`FrameWorker` (a plugin's
+    :class:`~.base.EngineHandle`), made by the first camera that asks."""
+    return engine.shared('camera.worker', lambda: FrameWorker(
+        engine.settings.get('renderer', 'gl'), engine))

@@ -1,0 +1,103 @@
+"""How many runs at once, from what runs cost on this machine (no ROS, no Dask).
+
+A fixed ``--jobs`` from a figure measured once on one submission starved the
+runs of a class that cost more (a run below 0.95 of its real-time factor is
+judged while its code ran slower than it was written for). Here a run starts
+only when the cores it will need are free: each run is counted at the cores
+the class's runs are measured to cost, starting from the profile's
+``cpu_per_run`` and then from the runs that finished (their CPU s per
+simulated s, from their control group: the record's ``cpu_s`` and
+``sim_time``), at the real-time factor it is run at; ``--jobs`` is only the
+most at once. The first run always starts, whatever it is expected to cost.
+
+A run that was starved all the same (the machine was busier than measured: a
+submission that costs more than the others, another program) is run again
+once the others are done, alone, and its page says why
+(:data:`STARVED_NOTE`). On a Dask scheduler's workers (``cores`` None) each
+worker's ``runs`` resource is the limit, and the starved runs are run again
+after the others there too.
+"""
+
+STARVED = 0.95            # of the factor asked: below it, a run was starved
+MIN_SIM = 10.0            # simulated s a run must have lasted for its cost to count
+QUANTILE = 0.75           # the runs' cost counted: more than most of the class's
+STARVED_NOTE = 'run again: its first run was starved (%.2f of real time)'
+
+
+def starved(result):
+    """The factor a finished run achieved when it fell below STARVED of the
+    one asked (a run that reached its simulation), else None."""
+    result = result or {}
+    achieved, asked = result.get('real_time_factor'), result.get('real_time_factor_asked')
+    if not achieved or not asked or not (result.get('truth') or {}).get('sim_time'):
+        return None
+    return achieved if achieved < STARVED * asked else None
+
+
+def cost(result):
+    """Cores a finished run kept busy per unit of real-time factor (CPU s
+    per simulated s), or None when it did not run long enough to say."""
+    result = result or {}
+    cpu, sim = result.get('cpu_s') or {}, (result.get('truth') or {}).get('sim_time') or 0.0
+    if not cpu or sim < MIN_SIM:
+        return None
+    return sum(cpu.values()) / sim
+
+
+class Admission(object):
+    """Which runs may start now (see the module docstring).
+
+    :param cores: the cores runs may use (None: no limit, a Dask scheduler's)
+    :param first: the profile's ``cpu_per_run``, the estimate until a run is measured
+    :param most: the most runs at once (``--jobs``)
+    """
+
+    def __init__(self, cores, first, most):
+        self.cores, self.first, self.most = cores, float(first), max(1, int(most))
+        self.costs = []             # measured, CPU s per simulated s
+        self.running = {}           # label -> cores counted for it
+
+    def per_run(self):
+        """CPU s per simulated s counted for a run now: the profile's figure,
+        then the QUANTILE of the measured runs'."""
+        if not self.costs:
+            return self.first
+        ordered = sorted(self.costs)
+        return ordered[int(round(QUANTILE * (len(ordered) - 1)))]
+
+    def need(self, rtf):
+        """Cores a run at real-time factor ``rtf`` is counted at (0, as fast
+        as possible: every core)."""
+        if self.cores is None:
+            return 0.0
+        if not rtf:
+            return float(self.cores)
+        return self.per_run() * rtf
+
+    def may_start(self, rtf):
+        """May a run at factor ``rtf`` start now?"""
+        if not self.running:
+            return True
+        if len(self.running) >= self.most:
+            return False
+        return self.cores is None or sum(self.running.values()) + self.need(rtf) <= \
+            self.cores + 1e-9
+
+    def started(self, label, rtf):
+        self.running[label] = self.need(rtf)
+
+    def ended(self, label, result):
+        """A run came back: its cost counted. True when it is to be run again
+        (starved, the first time)."""
+        self.running.pop(label, None)
+        measured = cost(result)
+        if measured is not None:
+            self.costs.append(measured)
+        return starved(result) is not None
+
+    def most_at_once(self, rtf=1.0):
+        """How many runs at ``rtf`` the estimate lets run at once now."""
+        if self.cores is None:
+            return self.most
+        need = self.need(rtf)
+        return max(1, min(self.most, int(self.cores / need + 1e-9) if need else self.most))
