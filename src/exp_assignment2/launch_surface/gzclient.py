@@ -107,15 +107,18 @@ class RobotDrawer(object):
 def main():
     """The gzclient executable (Gazebo's client options are accepted and unused)."""
     stop = Stop()
-    rospy.init_node('gazebo_gui', disable_signals=True)
     display = viewer.display_of(os.environ)
+    with_rviz = display is not None and viewer.frame_rate(os.environ) is None
+    # only rviz's frames need the simulated time: otherwise no /clock, which comes
+    # a thousand times a simulated second (Gazebo's client is no rospy node to pay for it)
+    rospy.init_node('gazebo_gui', disable_signals=True, disable_rostime=not with_rviz)
     if display is None:
         rospy.loginfo('gzclient: no display (DISPLAY is not set), so no viewer window; the '
                       'simulation runs on. Set DISPLAY (or run under xvfb-run) to see it in rviz')
         stop.wait()
         rospy.signal_shutdown('gzclient stopped')
         return 0
-    if viewer.frame_rate(os.environ) is not None:    # nobody watches live: no rviz
+    if not with_rviz:        # a display nobody watches live: Gazebo's window without rviz
         gui_window.show(stop)
         rospy.signal_shutdown('gzclient stopped')
         return 0

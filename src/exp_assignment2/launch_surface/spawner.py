@@ -139,7 +139,8 @@ def main(argv=None):
         print(str(exc), file=sys.stderr)
         return 2
     stop = Stop()
-    rospy.init_node('spawner', anonymous=True, disable_signals=True)
+    # no /clock (a thousand a simulated second): nothing here is timed in simulated time
+    rospy.init_node('spawner', anonymous=True, disable_signals=True, disable_rostime=True)
     spawner = Spawner(options, stop)
     started = spawner.start()
     if started:
