@@ -190,7 +190,7 @@ def main(argv):
         if detail:
             print_cpu(detail[1]['runs'], detail[0], detail[1]['profile'])
     if 'mixed' in args.classes and not args.fixtures and not args.scheduler:
-        mixed = make_mixed(os.path.join(scratch, 'mixed'))
+        mixed = make_mixed(os.path.join(scratch, 'mixed-class'))
         print('grading a class of real shape (%d submissions of %g simulated s: %d '
               'course-shaped, %s), at the grader\'s default' % (
                   len(os.listdir(mixed)) - 1, args.duration, MIXED_COURSE_SHAPED,
