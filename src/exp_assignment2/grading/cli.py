@@ -98,9 +98,8 @@ def parse_args(argv):
     return args
 
 
-# the most runs at once by default, a core: a run costs more than a quarter of
-# one (the simulator, the display and ROS alone); how many do run at once is
-# what their measured cost lets the cores keep at real time (run.admission)
+# the most runs at once by default, a core (a run costs more than a quarter of one); how
+# many do run at once is what their measured cost lets the cores keep at real time (admission)
 RUNS_PER_CORE = 4
 
 
