@@ -33,6 +33,7 @@ workers taking K/2 each, grades again, and prints both.
 Run it on an otherwise idle machine: it measures wall time and CPU.
 """
 import argparse
+import collections
 import json
 import os
 import shutil
@@ -217,7 +218,7 @@ def grade_rows(args, folder, scratch, count, jobs_list, name='jobs', goal=True):
         'same', 'verdicts'))
     first, detail = None, None
     for jobs in ([None] if args.scheduler else jobs_list):
-        wall, report, summary = grade(folder, os.path.join(scratch, '%s%s' % (name, jobs or '')),
+        wall, report, _ = grade(folder, os.path.join(scratch, '%s%s' % (name, jobs or '')),
                                       jobs, args.duration, args.real_time_factor,
                                       args.scheduler)
         verdicts = {s['name']: s['verdict'] for s in report['submissions']}
@@ -232,7 +233,8 @@ def grade_rows(args, folder, scratch, count, jobs_list, name='jobs', goal=True):
             'dask' if args.scheduler else jobs or 'default', wall, count * 3600.0 / wall,
             min(factors or [0]), statistics.median(factors or [0]), len(below), len(again),
             most_at_once(runs), 'yes' if verdicts == first else 'NO',
-            summary.split(': ', 1)[-1].split(';')[0]))
+            ', '.join('%d %s' % (n, v) for v, n in sorted(
+                collections.Counter(verdicts.values()).items()))))
         print('     each run\'s real-time factor: ' + ', '.join(
             '%s %.2f%s' % (r['label'], r['real_time_factor'], ' (run again)' if r in again
                            else '') for r in runs if r.get('real_time_factor')))
