@@ -147,12 +147,13 @@ def run(tmp_path, name, push, launch_args=(), env_script=None):
     return truth.records, json.loads(said[0][len('PROBE '):]), output
 
 
-def on_script(script, start, samples, slack=0.0):
-    """Samples (t, x, y, z) not where the script has the ball at t (or within
-    ``slack`` s of it, every step's place tried)."""
+def on_script(script, start, samples, before=0.0, after=0.0):
+    """Samples (t, x, y, z) not where the script has the ball at t (or from
+    ``before`` s before it to ``after`` s after it, every step's place tried)."""
     wrong = []
     for t, x, y, z in samples:
-        tries = [t + k * 0.01 for k in range(-int(slack / 0.01), int(slack / 0.01) + 1)]
+        tries = [t + k * 0.01 for k in range(-int(round(before / 0.01)),
+                                             int(round(after / 0.01)) + 1)]
         if not any(max(abs(a - b) for a, b in zip(
                 ball_script.play(script, when - start)[:3], (x, y, z))) < 1e-3
                 for when in tries):
@@ -193,5 +194,7 @@ def test_two_runs_of_a_seed_have_the_same_ball_whatever_the_students_node_does(t
             {key: len(value) for key, value in seen.items()}
         assert on_script(script, 0.0, seen['get']) == []
         assert on_script(script, 0.0, seen['odom']) == []
-        # model_states has no stamp: the last /clock before it is within 0.5 s of it
-        assert on_script(script, 0.0, seen['states'], slack=0.5) == []
+        # model_states has no stamp: it is read at the probe's last /clock, which may
+        # be behind it (the probe's /clock queue, a thousand a second, fell 1 s and more
+        # behind under CI's three test workers), never far ahead
+        assert on_script(script, 0.0, seen['states'], before=0.5, after=5.0) == []
