@@ -145,17 +145,20 @@ def test_a_killed_worker_has_its_run_done_again(cluster):
         time.sleep(0.5)
     time.sleep(5)                    # in the middle of the run
     os.killpg(victim.pid, signal.SIGKILL)
+    cluster['workers'].remove(victim)       # the later tests' count, whatever follows here
     output, _ = teacher.communicate(timeout=600)
     assert teacher.returncode == 0, output[-3000:]
     run, teacher = records(out, 'works')
     assert run['verdict'] == 'passed'
-    workers = teacher['workers']
-    assert len(workers) == 2 and workers[0] != workers[1]
-    # the teacher's side's part, beside the worker's record it never writes again
-    assert teacher['notes'] == ['run again: its worker %s was lost in the middle of the run; '
-                                'done on %s' % tuple(workers)]
+    workers, notes = teacher['workers'], teacher['notes']
+    lost = ('run again: its worker %s was lost in the middle of the run; done on %s'
+            % tuple(workers[:2]))
+    # a machine busy with other tests may starve the run done again: it is then run
+    # a third time, alone, and says so too (run.admission)
+    starved = [n for n in notes if n.startswith('run again: its first run was starved')]
+    assert len(workers) == 2 + len(starved) and workers[0] != workers[1], teacher
+    assert notes == starved + [lost], notes
     assert not any(n.startswith('run again') for n in run['notes'])
-    cluster['workers'].remove(victim)
 
 
 def test_a_worker_of_another_version_is_refused(cluster):

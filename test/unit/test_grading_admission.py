@@ -143,3 +143,33 @@ def test_a_run_starved_twice_is_kept_as_it_came_the_second_time(tmp_path, no_wai
     assert runs[0].result['real_time_factor'] == 0.92
     assert record.notes(runs[0].result) == [
         'run again: its first run was starved (0.90 of real time)']
+
+
+def test_a_starved_run_whose_first_worker_was_lost_keeps_both_facts(tmp_path, no_wait):
+    """Its first attempt's worker lost and the task done again elsewhere (Dask),
+    then starved and sent again: its workers are every start's, in order, and
+    its notes say both (the starved second attempt is no lost worker)."""
+    cluster = CostlyCluster({'a': [ran(0.6, achieved=0.9), ran(0.6)]})
+    first_poll = cluster.poll_starts
+
+    def poll_starts():          # a worker lost: Dask started the first attempt twice
+        first_poll()
+        for label, workers in cluster.started.items():
+            if len(workers) == 1 and not cluster.attempts.get(label):
+                cluster.started[label] = ['tcp://lost:1', 'tcp://b:2']
+                cluster.attempts[label] = [1, 1]
+        if len(cluster.keys) == 2 and len(cluster.started['a']) == 2:
+            cluster.started['a'].append('tcp://c:3')
+            cluster.attempts['a'].append(2)
+    cluster.attempts, cluster.poll_starts = {}, poll_starts
+    runs = runs_of(tmp_path, ['a'])
+    dispatch.grade(runs, cluster, Progress(cluster), copies=None,
+                   admission=Admission(2, 0.94, 8))
+    assert cluster.keys == [('a', 1), ('a', 2)]
+    with open(os.path.join(runs[0].record, 'teacher.json')) as f:
+        teacher = json.load(f)
+    assert teacher['workers'] == ['tcp://lost:1', 'tcp://b:2', 'tcp://c:3']
+    assert teacher['notes'] == [
+        'run again: its first run was starved (0.90 of real time)',
+        'run again: its worker tcp://lost:1 was lost in the middle of the run; done on '
+        'tcp://b:2']

@@ -69,9 +69,10 @@ class Cluster(object):
                     'cancelled' if self.stopped_now else 'duration'))
                 return
 
-    def stop_starting(self, labels):
+    def stop_starting(self, labels, before=None):
         self.no_new = True
-        waiting = [f for f, label in labels.items() if label not in self.started]
+        waiting = [f for f, label in labels.items()
+                   if len(self.started.get(label) or []) <= (before or {}).get(label, 0)]
         self.cancelled += waiting
         return waiting
 

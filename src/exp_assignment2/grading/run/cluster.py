@@ -70,7 +70,7 @@ def _task(payload, data, token):
     worker = get_worker()
     key = getattr(worker, 'get_current_task', lambda: None)()
     Queue(STARTS + token).put({'label': payload['label'], 'worker': worker.address,
-                               'time': time.time()})
+                               'attempt': payload.get('attempt') or 1, 'time': time.time()})
     if Event(NO_NEW + token).is_set():      # after the announcement: see Cluster.stop_starting
         return {'skipped': True}
     stop = Event(STOP + token)
@@ -107,6 +107,7 @@ class Cluster(object):
         self.no_new = Event(NO_NEW + self.token, client=self.client)
         self.starts = Queue(STARTS + self.token, client=self.client)
         self.started = {}           # label -> [worker address, ...] (more than one: run again)
+        self.attempts = {}          # label -> the attempt of each of those starts
         self.version = tasks.package_version()
         self.workers = self._eligible_workers()
 
@@ -153,16 +154,20 @@ class Cluster(object):
         """Read the start announcements (what runs where, and which started again)."""
         for start in self.starts.get(batch=True):      # what is there now, without waiting
             self.started.setdefault(start['label'], []).append(start['worker'])
+            self.attempts.setdefault(start['label'], []).append(start.get('attempt') or 1)
 
-    def stop_starting(self, labels):
+    def stop_starting(self, labels, before=None):
         """Ctrl-C once: no run starts from now on; of ``labels`` ({future: its
         run's label}), the futures of the runs that had not started,
-        cancelled. A task looks at the event after announcing its start: its
-        run was announced before the event was set, and runs on, or it does
-        not run."""
+        cancelled (``before``: label -> its starts of earlier attempts, a
+        starved run sent again). A task looks at the event after announcing
+        its start: its run was announced before the event was set, and runs
+        on, or it does not run."""
         self.no_new.set()
         self.poll_starts()
-        waiting = [f for f, label in labels.items() if label not in self.started]
+        before = before or {}
+        waiting = [f for f, label in labels.items()
+                   if len(self.started.get(label) or []) <= before.get(label, 0)]
         self.client.cancel(waiting)
         return waiting
 
@@ -206,18 +211,31 @@ def _planned(run, teacher):
     return teacher
 
 
-def unpack_result(outcome, run, started):
+def lost_workers(workers, attempts=None):
+    """Of the workers a run started on, in order, the indices of those lost in
+    the middle of it: each start followed by another of the same attempt
+    (Dask running the task again). A start of a later attempt (a starved run
+    sent again) is no loss. ``attempts`` None: all one attempt."""
+    attempts = list(attempts or [])
+    attempts += [1] * (len(workers) - len(attempts))
+    return [i for i in range(len(workers) - 1) if attempts[i] == attempts[i + 1]]
+
+
+def unpack_result(outcome, run, started, attempts=None):
     """The run's directory on the teacher's side as its worker sent it back
     (its record as the worker wrote it), and the teacher's part added beside
-    it: the workers that ran it, a note when it was run again, what was cut."""
+    it: the workers that ran it (every attempt's), a note when a worker was
+    lost, what was cut. ``attempts``: label -> the attempt of each start."""
     own = tasks.unpack_run(outcome['archive'], run.dir)
     if own is None:
         raise ValueError('its worker sent back no record')
-    workers = started.get(run.label) or []
+    workers = list(started.get(run.label) or [])
     teacher = {'workers': workers}
-    if len(workers) > 1:
+    lost = lost_workers(workers, (attempts or {}).get(run.label))
+    if lost:        # named with the worker that took the run over from the last of them
         teacher['notes'] = ['run again: its worker %s was lost in the middle of the run; '
-                            'done on %s' % (', '.join(workers[:-1]), workers[-1])]
+                            'done on %s' % (', '.join(workers[i] for i in lost),
+                                            workers[lost[-1] + 1])]
     teacher = _planned(run, teacher)
     if outcome.get('cut'):
         teacher['cut'] = list(outcome['cut'])

@@ -59,6 +59,7 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None, admission
             not_run(run, grader_fault=record.fault('could not send it to a worker', exc))
             return None
         futures[future] = run
+        run.starts_before = len(cluster.started.get(run.label) or [])   # an earlier attempt's
         pending.add(future)
         admission.started(run.label, run.settings.real_time_factor)
         return future
@@ -71,7 +72,6 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None, admission
             send(queued.pop(0))
         if starved_runs and not queued and not pending and not stopping.asked:
             run, factor = starved_runs.pop(0)
-            cluster.started.pop(run.label, None)    # its workers: this attempt's
             run.notes = [STARVED_NOTE % factor]
             run.state = 'waiting'
             send(run, attempt=2)
@@ -122,9 +122,11 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None, admission
         while pending:
             if stopping.asked > noticed:
                 if not noticed:         # no new run starts (also before stopping them now)
-                    for future in cluster.stop_starting({f: futures[f].label for f in pending}):
-                        pending.discard(future)
-                        futures[future].state = 'stopped'
+                    for future in cluster.stop_starting(
+                            {f: futures[f].label for f in pending},
+                            {futures[f].label: futures[f].starts_before for f in pending}):
+                        pending.discard(future)     # a starved one: its first record kept
+                        futures[future].state = 'done' if futures[future].result else 'stopped'
                     for run in queued:
                         run.state = 'stopped'
                     del queued[:], starved_runs[:]    # a starved run keeps its first record
@@ -145,7 +147,8 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None, admission
             admit()
             for future in pending:
                 run = futures[future]
-                if run.label in cluster.started and run.state == 'waiting':
+                if len(cluster.started.get(run.label) or []) > run.starts_before \
+                        and run.state == 'waiting':
                     run.state = 'running'
             progress.total = len(todo)
             progress.show(todo)
@@ -174,7 +177,7 @@ def _received(run, future, cluster):
         if outcome.get('skipped'):
             run.state = 'stopped'
             return
-        unpack_result(outcome, run, cluster.started)
+        unpack_result(outcome, run, cluster.started, getattr(cluster, 'attempts', None))
     except (KilledWorker, CancelledError, tasks.VersionMismatch, OSError,
             RuntimeError) as exc:
         lost_result(run, exc, cluster.started)

@@ -60,6 +60,7 @@ class Run(object):
         self.submission = submission or Submission(spec.name, spec.path, spec.kind,
                                                    commit=(spec.git or {}).get('commit'))
         self.seed, self.label = spec.seed, spec.label
+        self.starts_before = 0      # its starts on a worker before this attempt (dispatch)
         self.dir = os.path.join(settings.runs_dir, self.label)
         self.work = os.path.join(self.dir, 'work')
         self.record = os.path.join(self.dir, 'record')
