@@ -174,6 +174,22 @@ def test_the_head_both_ways_at_the_stopped_ball():
     assert figure(on_it, 'looks_both_ways')[0] == 0.0
 
 
+def test_a_stop_the_run_s_end_cut_is_an_occasion_only_with_look_and_grace_before_it():
+    """The ball still to the end: the robot came within reach 6.7 s before the end
+    and turned its head one way (the other was to come: a start slowed by a busy
+    machine, seen in CI). A stop that went on would have given it its grace
+    after the stop: here only look + grace before the end is an occasion."""
+    def arrives(at):
+        return lambda t: (0.0 if t < at else min(1.0, t - at), 0.0, 0.0)
+    one_way_then = lambda t: 0.9 * min(1.0, max(0.0, t - 26.0))    # noqa: E731
+    cut = trace(arrives(23.5), lambda t: (4.2, 0, 0.5), until=30.2, head=one_way_then)
+    with pytest.raises(metrics.NotJudged, match='came too late to look'):
+        figure(cut, 'looks_both_ways')
+    longer = trace(arrives(20.0), lambda t: (4.2, 0, 0.5), until=30.2, head=one_way_then)
+    got = figure(longer, 'looks_both_ways')
+    assert got[0] == 0.0 and 'at 0 of the 1 stops' in got[1]
+
+
 def test_wandering_while_the_ball_is_out_of_sight():
     """The ball is behind the robot (out of its 80 deg): four places 2 m apart."""
     wanders = trace(line(0, 8, 0, 40), lambda t: (-8, 0, 0.5), until=40)

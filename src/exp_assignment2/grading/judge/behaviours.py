@@ -164,7 +164,8 @@ def follows_ball(trace, roles, check):
 def looks_both_ways(trace, roles, check):
     """Share of the ball's stops the robot stayed at (within ``reach``, not on it, awake,
     ``look`` s) at which it turned its head at least ``angle`` rad to each side, by
-    ``grace`` s after the stop."""
+    ``grace`` s after the stop (a stop the run's end cut: ``look`` + ``grace`` s
+    before the end, or it is no occasion)."""
     track = _track(trace, roles, check, head=True)
     speeds, asleep, reach = bt.ball_speeds(track), _asleep(track, check), _reach(check)
     angle, grace = float(check.get('angle', 0.3)), float(check.get('grace', GRACE))
@@ -175,9 +176,12 @@ def looks_both_ways(trace, roles, check):
     stayed, late = [], 0
     for a, b in found:
         near = [k for k in range(a, b + 1) if ON < bt.distance(track[k]) <= reach]
-        if near and track[b].t - track[near[0]].t >= look:
+        # a stop the run's end cut: its grace after the stop never came, so the robot
+        # needed that long at the ball before the end to have had the occasion
+        need = look + (grace if b == len(track) - 1 else 0.0)
+        if near and track[b].t - track[near[0]].t >= need:
             stayed.append((near[0], b))
-        late += bool(near) and track[b].t - track[near[0]].t < look
+        late += bool(near) and track[b].t - track[near[0]].t < need
     if not stayed:
         if found and not late:
             return 0.0, '%s: the ball stopped %d times; the robot came within %g m of it at ' \
