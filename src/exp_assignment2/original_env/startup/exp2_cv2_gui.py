@@ -12,8 +12,9 @@ and rospy runs each subscription's callbacks in its own thread.
 
 What this does: after ``cv2`` is imported, the HighGUI functions are replaced
 by wrappers that hand the work to a single daemon thread ("cv2-highgui"),
-which owns the QApplication and all windows and keeps pumping Qt events
-(``waitKeyEx`` with a short tick) while a window exists. So OpenCV only ever
+which owns the QApplication and all windows and pumps Qt events
+(``waitKeyEx`` with a short tick) after each frame it draws and every
+``EVENTS_PERIOD`` while a window exists. So OpenCV only ever
 sees one GUI thread, its single-thread mode, which works.
 
 * ``imshow`` from another thread copies the frame, keeps only the newest
@@ -52,7 +53,10 @@ SYNC_FUNCTIONS = (
     'selectROI', 'selectROIs', 'setOpenGlContext', 'setOpenGlDrawCallback',
     'updateWindow',
 )
-TICK_MS = 5            # how long each event-pumping waitKey of the GUI thread lasts
+TICK_MS = 1            # how long each event-pumping waitKey of the GUI thread lasts
+# s between two pumps while no frame comes: pumping back to back (waitKey(5) in
+# a loop) cost a process with one window 0.048 of a core, once every 50 ms 0.008
+EVENTS_PERIOD = 0.05
 VISIBILITY_PERIOD = 0.2  # s between checks for windows closed by the user
 MARKER = '_exp2_gui_thread'
 
@@ -179,6 +183,10 @@ class GuiThread(object):
                 with self.cond:
                     while not (self.queue or self.windows or self.stopping):
                         self.cond.wait()
+                    if not (self.queue or self.stopping):
+                        # windows, nothing to draw: their events now and then; a frame
+                        # or a call wakes the thread at once
+                        self.cond.wait(EVENTS_PERIOD)
                     if self.stopping and not self.queue:
                         break
                     items = list(self.queue)
