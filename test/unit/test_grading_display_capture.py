@@ -35,11 +35,11 @@ def screen(tmp_path):
                 process.kill()
 
 
-def window(name, title, size=(320, 200)):
-    """A mapped top-level window filled with COLOUR, titled ``title``."""
+def window(name, title, size=(320, 200), colour=COLOUR):
+    """A mapped top-level window at (0, 0) filled with ``colour``, titled ``title``."""
     conn = xdisplay.Display(name)
     screen = conn.screen()
-    pixel = COLOUR[2] << 16 | COLOUR[1] << 8 | COLOUR[0]
+    pixel = colour[2] << 16 | colour[1] << 8 | colour[0]
     win = screen.root.create_window(0, 0, size[0], size[1], 0, screen.root_depth,
                                     background_pixel=pixel)
     win.set_wm_name(title)
@@ -73,7 +73,8 @@ def test_shared_memory_reads_what_get_image_reads_and_a_gone_window_is_none(scre
 
 def test_the_capture_keeps_each_window_s_picture(screen):
     name, directory = screen
-    kept = [window(name, 'camera'), window(name, 'the state machine', (200, 150))]
+    # no window manager: the second opens over the first, which is read whole all the same
+    kept = [window(name, 'camera'), window(name, 'the state machine', (200, 150), (0, 0, 255))]
     deadline, seen = time.monotonic() + 20, {}
     while time.monotonic() < deadline and len(seen) < 2:
         time.sleep(0.5)
@@ -83,7 +84,8 @@ def test_the_capture_keeps_each_window_s_picture(screen):
     import cv2
     picture = cv2.imread(seen['camera'][0]['path'])
     assert picture.shape == (200, 320, 3)
-    assert [abs(int(a) - b) <= 3 for a, b in zip(picture[100, 160], COLOUR)] == [True] * 3
+    for y, x in ((100, 160), (10, 10)):         # beside the other, and under it
+        assert [abs(int(a) - b) <= 3 for a, b in zip(picture[y, x], COLOUR)] == [True] * 3
     assert len(kept) == 2       # their connections open until here: their windows too
     with open(os.path.join(directory, 'windows.json')) as f:
         assert 'shared memory' not in f.read()      # read through it here

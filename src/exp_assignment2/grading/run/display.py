@@ -130,7 +130,11 @@ def capture(name, directory):
     read = _reader(name, display, book)
     root = display.screen().root
     if display.has_extension('Composite'):
-        composite.redirect_subwindows(root, composite.RedirectAutomatic)
+        # manual: each window is kept off screen and never drawn onto the screen
+        # (nobody watches it); automatic redirection also composited every frame
+        # of a student's imshow onto it, half of Xvfb's work (measured: 0.038
+        # of a core for an 800 x 800 window at 30 Hz, 0.023 without)
+        composite.redirect_subwindows(root, composite.RedirectManual)
     else:
         book.notes.append('no Composite extension: a window covered by another shows it')
     book.write()
