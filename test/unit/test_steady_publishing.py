@@ -168,3 +168,18 @@ def test_a_closed_subscriber_is_an_error_at_the_next_publish():
     finally:
         close(conn, transport)
         ours.close()
+
+
+def test_a_socket_with_a_timeout_is_left_to_the_sender_thread():
+    """Python's send on a socket with a timeout waits for room: never from the loop."""
+    ours, theirs = tcp_pair()
+    ours.settimeout(5.0)
+    transport = SocketTransport(ours)
+    conn = steady_publishing.SteadyQueuedConnection(transport, 10)
+    try:
+        conn.write_data(framed(3, 8))
+        assert read_messages(theirs, 1) == [bytes([3]) * 8]
+        assert transport.sent == [framed(3, 8)]     # written by the sender thread
+    finally:
+        close(conn, transport)
+        ours.close(), theirs.close()

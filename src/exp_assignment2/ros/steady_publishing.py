@@ -61,7 +61,8 @@ class SteadyQueuedConnection(QueuedConnection):
         """Bytes of ``data`` the socket took without waiting (0: none, or an
         error the sender thread meets again and handles as rospy does)."""
         sock = getattr(self._connection, 'socket', None)
-        if sock is None or self._connection.done:
+        # a socket with a timeout would wait for room in Python's send: none here
+        if sock is None or self._connection.done or sock.gettimeout() is not None:
             return 0
         try:
             return sock.send(data, socket.MSG_DONTWAIT)
