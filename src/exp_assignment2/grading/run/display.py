@@ -104,7 +104,7 @@ def _picture(data, width, height):
                       interpolation=cv2.INTER_AREA), True
 
 
-def _reader(name, display, book):
+def _reader(name, book):
     """read(window, width, height) -> its pixels' bytes (None: gone): through
     shared memory (:mod:`.xshm`), else python-xlib's GetImage (the note says why)."""
     from Xlib import X
@@ -127,7 +127,7 @@ def capture(name, directory):
     from exp_assignment2.grading.run.windows import MAX_LOOK, MAX_READ, CaptureBook
     book = CaptureBook(directory)
     display = xdisplay.Display(name)
-    read = _reader(name, display, book)
+    read = _reader(name, book)
     root = display.screen().root
     if display.has_extension('Composite'):
         # manual: each window is kept off screen and never drawn onto the screen
