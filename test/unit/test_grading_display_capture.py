@@ -89,3 +89,13 @@ def test_the_capture_keeps_each_window_s_picture(screen):
     assert len(kept) == 2       # their connections open until here: their windows too
     with open(os.path.join(directory, 'windows.json')) as f:
         assert 'shared memory' not in f.read()      # read through it here
+
+
+def test_a_window_s_picture_is_its_pixels_in_blue_green_red_and_contiguous():
+    numpy = pytest.importorskip('numpy')
+    rng = numpy.random.default_rng(3)
+    zpixmap = rng.integers(0, 256, (5, 7, 4), dtype=numpy.uint8)   # B, G, R, unused
+    pixels, scaled = display._picture(zpixmap.tobytes(), 6, 5)     # the window's left 6 px
+    assert not scaled and pixels.flags['C_CONTIGUOUS']
+    assert pixels.shape == (5, 6, 3) and (pixels == zpixmap[:, :6, :3]).all()
+    assert display._picture(b'\0' * 10, 6, 5) == (None, False)
