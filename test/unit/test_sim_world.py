@@ -97,8 +97,7 @@ def test_pacing_at_zero_runs_at_its_ceiling_and_without_one_never_waits():
     for _ in range(1000):
         sim += 0.01
         wall.t += pacer.delay(sim)
-    # half a ms of wall a step: it waits every fourth, never more than min_wait ahead
-    assert sim / 20.0 - pacer.min_wait <= wall.t <= sim / 20.0
+    assert sim / wall.t == pytest.approx(20.0, rel=1e-6)
     assert Pacer(0.0).pace == 20.0                   # the default ceiling
     unbounded = Pacer(0.0, wall=wall, max_real_time_factor=0.0)
     assert all(unbounded.delay(t * 0.01) == 0.0 for t in range(100))
@@ -106,7 +105,7 @@ def test_pacing_at_zero_runs_at_its_ceiling_and_without_one_never_waits():
 
 def test_a_loop_of_short_steps_waits_every_other_step_and_keeps_to_the_wall():
     wall = FakeWall()
-    pacer = Pacer(1.0, wall=wall)                # min_wait 2 ms, the default
+    pacer = Pacer(1.0, wall=wall)                # min_ahead 2 ms, the default
     pacer.restart(0.0)
     sim, waits = 0.0, 0
     for _ in range(1000):
@@ -114,11 +113,15 @@ def test_a_loop_of_short_steps_waits_every_other_step_and_keeps_to_the_wall():
         wait = pacer.delay(sim)
         waits += wait > 0
         wall.t += wait
-        assert 0.0 <= sim - wall.t < pacer.min_wait + 0.001
+        assert 0.0 <= sim - wall.t < pacer.min_ahead + 0.001
     assert 490 <= waits <= 500                   # every other (sums of 0.001 round)
-    every_step = Pacer(1.0, wall=wall, min_wait=0.0)
+    every_step = Pacer(1.0, wall=wall, min_ahead=0.0)
     every_step.restart(sim)
     assert every_step.delay(sim + 0.001) == pytest.approx(0.001)
+    fast = Pacer(20.0, wall=wall)                # 2 simulated ms at any factor
+    fast.restart(sim)
+    assert fast.delay(sim + 0.001) == 0.0
+    assert fast.delay(sim + 0.002) == pytest.approx(0.0001)
 
 
 def test_a_loop_that_falls_behind_starts_again_instead_of_racing():

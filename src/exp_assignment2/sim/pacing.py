@@ -20,20 +20,21 @@ class Pacer(object):
     ``max_real_time_factor`` (0: no ceiling). A loop that falls more than
     ``max_lag`` s of simulated time behind (a slow frame, a pause) starts again
     from where it is instead of racing to catch up. A loop less than
-    ``min_wait`` wall s ahead steps on without waiting: at 1 kHz a wait after
-    every step cost 0.029 of a core in waiting alone, after every other 0.016,
-    and simulated time is never more than ``min_wait`` and a step ahead.
+    ``min_ahead`` simulated s ahead steps on without waiting (2 ms: a wait
+    every other 1 ms step, at any factor): at 1 kHz and real time a wait after
+    every step cost 0.029 of a core in waiting alone, after every other 0.016;
+    simulated time is never more than ``min_ahead`` and a step ahead.
     """
 
     def __init__(self, real_time_factor, wall=time.monotonic, max_lag=0.25,
-                 max_real_time_factor=MAX_REAL_TIME_FACTOR, min_wait=0.002):
+                 max_real_time_factor=MAX_REAL_TIME_FACTOR, min_ahead=0.002):
         for name, value in (('real_time_factor', real_time_factor),
                             ('max_real_time_factor', max_real_time_factor)):
             if not (value >= 0.0 and value != float('inf')):
                 raise ValueError('%s must be >= 0 (0: as fast as possible), got %r'
                                  % (name, value))
         self.rtf, self.wall, self.max_lag = float(real_time_factor), wall, max_lag
-        self.min_wait = float(min_wait)
+        self.min_ahead = float(min_ahead)
         self.pace = self.rtf or float(max_real_time_factor)     # 0: no pace at all
         self.wall0 = self.sim0 = None
 
@@ -52,8 +53,7 @@ class Pacer(object):
         if ahead < -self.max_lag:
             self.restart(sim_time)
             return 0.0
-        wait = ahead / self.pace
-        return wait if wait >= self.min_wait else 0.0
+        return ahead / self.pace if ahead >= self.min_ahead else 0.0
 
 
 class FramePace(object):
