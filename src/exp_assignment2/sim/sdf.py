@@ -31,7 +31,8 @@ import os
 from collections import namedtuple
 
 from exp_assignment2.sim.sdf_geometry import SdfError, floats, pose_of, pose_tuple
-from exp_assignment2.sim.sdf_model import model_urdf, read_model
+from exp_assignment2.sim.sdf_model import read_model
+from exp_assignment2.sim.sdf_to_urdf import model_urdf
 from exp_assignment2.sim.sdf_sources import SIZES_FILE, Sources, load_model_sizes, parse_xml
 
 __all__ = ['SdfError', 'SdfWorld', 'WorldModel', 'read_world', 'model_to_urdf', 'model_pose',
