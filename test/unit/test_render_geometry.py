@@ -7,8 +7,10 @@ import numpy as np
 import pytest
 
 from gl_scene import (FAR, HFOV, NEAR, cube_obj, cube_stl, focal, gl_meshes, p,  # noqa: F401
-                      parse_file, scene, urdf_shapes)
+                      parse_file, scene)
 from exp_assignment2.sim.gl.scene import view_projection
+from exp_assignment2.sim.rotations import pose_matrix, rpy_matrix
+from exp_assignment2.sim.urdf_elements import resolve_mesh_path
 
 
 def test_projection_is_the_pinhole_and_pybullets():
@@ -18,7 +20,7 @@ def test_projection_is_the_pinhole_and_pybullets():
     for width, height in ((320, 320), (400, 240)):
         pos = np.array([1.0, -2.0, 0.4])
         yaw, pitch = 0.7, 0.2
-        rot = urdf_shapes.rpy_matrix(0.0, pitch, yaw)
+        rot = rpy_matrix(0.0, pitch, yaw)
         cam = np.eye(4)
         cam[:3, :3], cam[:3, 3] = rot, pos
         local = np.stack([rng.uniform(1, 10, 50), rng.uniform(-3, 3, 50),
@@ -57,7 +59,7 @@ def test_read_poses_are_pybullets_link_frames(scene):
                                        physicsClientId=scene.client)[4:6]
         else:   # the base: with an identity inertial frame, its pose
             pos, quat = p.getBasePositionAndOrientation(body, physicsClientId=scene.client)
-        np.testing.assert_allclose(pose, urdf_shapes.pose_matrix(pos, quat), atol=1e-5)
+        np.testing.assert_allclose(pose, pose_matrix(pos, quat), atol=1e-5)
     cam = scene.pose_robot(math.pi, 0.4)
     np.testing.assert_allclose(d.link_pose(poses, 'robot', 'camera_link')[:3, 3], cam[0],
                                atol=1e-5)
@@ -102,8 +104,8 @@ def test_mesh_paths_relative_and_package(tmp_path):
     (tmp_path / 'mypkg' / 'meshes' / 'cube.obj').write_text('v 0 0 0\n')
     urdf_dir = str(tmp_path / 'mypkg' / 'urdf')
     want = str(tmp_path / 'mypkg' / 'meshes' / 'cube.obj')
-    assert urdf_shapes.resolve_mesh_path('package://mypkg/meshes/cube.obj', urdf_dir) == want
-    assert urdf_shapes.resolve_mesh_path('../meshes/cube.obj', urdf_dir) == os.path.join(
+    assert resolve_mesh_path('package://mypkg/meshes/cube.obj', urdf_dir) == want
+    assert resolve_mesh_path('../meshes/cube.obj', urdf_dir) == os.path.join(
         urdf_dir, '../meshes/cube.obj')
 
 

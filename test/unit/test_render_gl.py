@@ -11,8 +11,9 @@ import numpy as np
 import pytest
 
 from gl_scene import (FAR, H, HFOV, NEAR, W, focal, gl, make_renderer,  # noqa: F401
-                      mesh_world, one_body_world, p, render, scene, tiny_image, urdf_shapes)
+                      mesh_world, one_body_world, p, render, scene, tiny_image)
 from exp_assignment2.sim.gl.scene import GLRenderer, view_projection
+from exp_assignment2.sim.rotations import rpy_matrix
 from exp_assignment2.vision import BallDetector
 
 
@@ -114,7 +115,7 @@ def test_tiny_renderer_at_pixel_centres_draws_boxes_as_gl(tmp_path, size):
         with make_renderer(reader.description, width, height, background=(1, 1, 1)) as gl:
             for _ in range(8):
                 cam = (np.array([-4.0, 0.0, 0.0]) + rng.uniform(-0.5, 0.5, 3),
-                       urdf_shapes.rpy_matrix(*rng.uniform(-0.3, 0.3, 3)))
+                       rpy_matrix(*rng.uniform(-0.3, 0.3, 3)))
                 red = coloured_pixels(gl.render(reader.read_poses(), cam, HFOV, NEAR, FAR), 2)
                 fixed, raw = (coloured_pixels(tiny_image(client, cam, width, height, c), 2)
                               for c in (True, False))

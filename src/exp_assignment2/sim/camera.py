@@ -22,7 +22,7 @@ import cv2
 import numpy as np
 from exp_assignment2.sim.bullet import p
 
-from exp_assignment2.sim.urdf import pose_matrix, rpy_matrix
+from exp_assignment2.sim.rotations import pose_matrix, rpy_matrix
 
 # Gazebo image formats -> (ROS encoding, channels)
 IMAGE_FORMATS = {'R8G8B8': 'rgb8', 'B8G8R8': 'bgr8', 'L8': 'mono8'}

@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from exp_assignment2.sim.urdf import quaternion_matrices
+from exp_assignment2.sim.rotations import quaternion_matrices
 
 WORLD_FRAMES = ('', 'world', 'map', '/world', '/map')
 IDENTITY = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))

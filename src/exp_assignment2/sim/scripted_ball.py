@@ -67,7 +67,7 @@ def footprints(models):
     """The world's fixed objects: for every link of every static model, the
     box around its primitive visuals and its collisions, as
     ((x0, y0, z0), (x1, y1, z1))."""
-    from exp_assignment2.sim.urdf import pose_matrix
+    from exp_assignment2.sim.rotations import pose_matrix
     out = []
     for model in models:
         if not model.static:

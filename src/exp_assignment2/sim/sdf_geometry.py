@@ -11,7 +11,7 @@ import os
 import numpy as np
 
 from exp_assignment2.sim.gazebo_materials import GAZEBO_MATERIALS, UNKNOWN
-from exp_assignment2.sim.urdf import rpy_matrix
+from exp_assignment2.sim.rotations import rpy_matrix
 
 PLANE_THICKNESS = 0.02      # a <plane> becomes a box this thick whose top face is the plane
 DEFAULT_RGBA = (0.7, 0.7, 0.7, 1.0)     # a visual with no material: light grey

@@ -13,7 +13,7 @@ import math
 import numpy as np
 
 from exp_assignment2.sim.camera import CameraSpec
-from exp_assignment2.sim.urdf import rpy_matrix
+from exp_assignment2.sim.rotations import rpy_matrix
 
 WIDTH, HEIGHT, HFOV = 960, 720, 60.0
 UNBOUNDED = (-8.0, 8.0, -8.0, 8.0)     # what is seen of a world without bounds

@@ -12,11 +12,11 @@ from collections import namedtuple
 
 import numpy as np
 
-from exp_assignment2.sim.urdf import pose_matrix
+from exp_assignment2.sim.rotations import pose_matrix
 
 Shape = namedtuple('Shape', 'model link kind params pose rgba')
 Shape.__doc__ = """One visual: ``kind`` (box, cylinder, sphere, capsule, mesh), its
-``params`` (as :class:`~exp_assignment2.sim.urdf.Visual`), its 4x4 world ``pose``."""
+``params`` (as :class:`~exp_assignment2.sim.urdf_elements.Visual`), its 4x4 world ``pose``."""
 
 
 def scenery(models):

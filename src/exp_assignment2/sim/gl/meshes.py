@@ -3,7 +3,7 @@
 Plain numpy (no pybullet, no GL): tessellation of the URDF primitives (box,
 cylinder, sphere, capsule), OBJ and STL mesh loading, and
 :func:`visual_triangles` / :func:`visual_vertices`, which turn one parsed
-:class:`~exp_assignment2.sim.urdf.Visual` into triangles (positions and normals in the
+:class:`~exp_assignment2.sim.urdf_elements.Visual` into triangles (positions and normals in the
 link frame) or vertex rows; :func:`indexed` shares their repeated vertices.
 """
 import logging
@@ -155,8 +155,8 @@ MESH_LOADERS = {'.obj': load_obj, '.stl': load_stl}
 
 
 def visual_triangles(visual):
-    """(positions, normals) of a :class:`~exp_assignment2.sim.urdf.Visual` in its link frame, or None
-    (with a warning) for a mesh that cannot be loaded."""
+    """(positions, normals) of a :class:`~exp_assignment2.sim.urdf_elements.Visual`
+    in its link frame, or None (with a warning) for a mesh that cannot be loaded."""
     kind, prm = visual.kind, visual.params
     if kind == 'box':
         pos, nrm = box_triangles(prm['size'])
@@ -185,7 +185,8 @@ def visual_triangles(visual):
 
 def visual_vertices(visual, frame=None):
     """Vertex rows [x y z nx ny nz r g b] (float32, VERTEX_FORMAT; one per corner)
-    of a :class:`~exp_assignment2.sim.urdf.Visual`, moved by the 4x4 ``frame`` if given; or None."""
+    of a :class:`~exp_assignment2.sim.urdf_elements.Visual`, moved by the 4x4
+    ``frame`` if given; or None."""
     tri = visual_triangles(visual)
     if tri is None:
         return None

@@ -18,7 +18,7 @@ import numpy as np
 
 from .context import GLContext
 from .meshes import VERTEX_FORMAT
-from ..urdf import pose_matrix
+from ..rotations import pose_matrix
 
 
 def view_projection(camera_pose, width, height, hfov_deg, near, far, flip_y=True):

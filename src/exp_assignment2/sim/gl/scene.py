@@ -19,7 +19,8 @@ from collections import namedtuple
 
 import numpy as np
 
-from ..urdf import parse, pose_matrix, quaternion_matrices
+from ..rotations import pose_matrix, quaternion_matrices
+from ..urdf import parse
 from .meshes import indexed, visual_vertices
 from .renderer import GLRenderer, view_projection
 
