@@ -17,8 +17,8 @@ import logging
 import math
 import threading
 
-
 from exp_assignment2.sim import releases, scripted_ball, urdf as urdf_reader
+from exp_assignment2.sim.calls import Calls
 from exp_assignment2.sim.model import Model
 from exp_assignment2.sim.pacing import MAX_REAL_TIME_FACTOR, Pacer
 from exp_assignment2.sim.physics import Physics
@@ -89,7 +89,7 @@ class Engine(object):
         self.plugins = collections.OrderedDict()     # model name -> [Plugin]
         self.steps, self.generation, self.paused = 0, 0, bool(paused)
         self.handle = EngineHandle(self)
-        self._queue = collections.deque()
+        self._calls = Calls()
         self._shared = {}
         self._warned = set()
         self._hooks = ([], [])          # (before, after) bound methods, rebuilt on change
@@ -191,32 +191,18 @@ class Engine(object):
             self._shared[key] = factory()
         return self._shared[key]
 
-    # work from other threads
+    # work from other threads (:mod:`.calls`)
     def call_soon(self, fn):
         """Queue ``fn()`` for the simulation thread (thread-safe)."""
-        self._queue.append(fn)
+        self._calls.soon(fn)
 
     def call_and_wait(self, fn, timeout=5.0):
         """Run ``fn()`` in the simulation thread and return its result (or raise
         what it raised); TimeoutError if the loop does not get to it."""
-        done, box = threading.Event(), {}
-
-        def call():
-            try:
-                box['value'] = fn()
-            except Exception as exc:        # handed back to the caller's thread
-                box['error'] = exc
-            done.set()
-        self.call_soon(call)
-        if not done.wait(timeout):
-            raise TimeoutError('the simulation loop did not answer within %.0f s' % timeout)
-        if 'error' in box:
-            raise box['error']
-        return box.get('value')
+        return self._calls.and_wait(fn, timeout)
 
     def run_queued(self):
-        while self._queue:
-            self._queue.popleft()()
+        self._calls.run()
 
     # stepping
     def step(self):
