@@ -15,17 +15,16 @@ CMakeLists.txt names that neither Debian nor the workspaces have (stand_ins).
 A failed build raises :class:`BuildFailed` with one line naming the user's
 file (build_errors).
 """
-import fcntl
 import hashlib
 import os
 import shutil
-import signal
 import subprocess
 import sys
 
 from exp_assignment2 import layout
 from exp_assignment2.original_env.overlay import (build_errors, debian_packages, python_package,
                                                   sim_package, source_tree, stand_ins)
+from exp_assignment2.original_env.overlay.lock import Locked
 from exp_assignment2.original_env.sourcing import sourced
 
 HERE = os.path.dirname(os.path.realpath(__file__))
@@ -228,33 +227,6 @@ def _read(path):
         return None
 
 
-class _Locked:
-    """An exclusive lock on the overlay, waited for at most LOCK_TIMEOUT s."""
-
-    def __init__(self, path):
-        self.path = path
-
-    def __enter__(self):
-        os.makedirs(os.path.dirname(self.path), exist_ok=True)
-        self.file = open(self.path, 'w')
-        try:
-            fcntl.flock(self.file, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except BlockingIOError:
-            log('waiting for another build of this overlay (at most %d s)' % LOCK_TIMEOUT)
-            signal.signal(signal.SIGALRM, _timed_out)
-            signal.alarm(LOCK_TIMEOUT)
-            fcntl.flock(self.file, fcntl.LOCK_EX)
-            signal.alarm(0)
-        return self
-
-    def __exit__(self, *exc):
-        self.file.close()
-
-
-def _timed_out(_signum, _frame):
-    raise BuildFailed('another build of this overlay held it for %d s' % LOCK_TIMEOUT)
-
-
 def build(package_dir, more=(), workspace=None, root=None, environ=None):
     """Build ``package_dir`` (and the ``more`` directories beside it) in its
     overlay and return ``environ`` (the workspace sourced) with the overlay in
@@ -283,7 +255,7 @@ def build(package_dir, more=(), workspace=None, root=None, environ=None):
             if overlay.path == outside or overlay.path.startswith(outside + '/'):
                 raise BuildFailed('the overlay %s would be inside %s: set EXP2_OVERLAY_ROOT'
                                   ' to a directory outside it' % (overlay.path, outside))
-        with _Locked(os.path.join(overlay.path, '.lock')):
+        with Locked(os.path.join(overlay.path, '.lock'), LOCK_TIMEOUT, log):
             stamp = overlay.stamp(names + more_names)
             if overlay.up_to_date(stamp):
                 log('overlay %s is up to date with %s' % (overlay.path, package_dir))
@@ -292,6 +264,8 @@ def build(package_dir, more=(), workspace=None, root=None, environ=None):
     except (BuildFailed, debian_packages.InstallFailed) as e:
         raise BuildFailed('the build of %s failed: %s' % (package_dir, e),
                           getattr(e, 'where', None), getattr(e, 'message', str(e)))
+    except TimeoutError as e:     # the lock (another build of this overlay)
+        raise BuildFailed('the build of %s failed: %s' % (package_dir, e))
     except subprocess.TimeoutExpired as e:
         raise BuildFailed('the build of %s failed: %s took more than %d s'
                           % (package_dir, e.cmd[0], e.timeout))
