@@ -9,36 +9,7 @@ import pytest
 
 from exp_assignment2.grading.plan import launch_nodes
 from exp_assignment2.grading.plan.planning import resolve
-
-DOG = {'world_commands': [], 'default_commands': ['roslaunch {package} gazebo_world.launch']}
-MIRO = {'world_commands': ['roslaunch {sim} miro_world.launch'],
-        'default_commands': ['rosrun {package} state_manager.py']}
-
-
-def package(tmp_path, readme, files=()):
-    """A package called my_pkg with a README and files {path: text}."""
-    root = tmp_path / 'my_pkg'
-    root.mkdir()
-    (root / 'package.xml').write_text('<package><name>my_pkg</name></package>')
-    (root / 'README.md').write_text(readme)
-    for rel, text in dict(files).items():
-        (root / rel).parent.mkdir(parents=True, exist_ok=True)
-        (root / rel).write_text(text)
-    return str(root)
-
-
-def reader(nodes, seen=None):
-    """A fake launch reader: {file name: [node names]} (absent: unreadable)."""
-    def read(requests, packages):
-        if seen is not None:
-            seen.append((requests, packages))
-        return {r['key']: {'nodes': nodes[r['file']]} if r.get('file') in nodes else
-                {'error': 'XmlParseException: bad'} for r in requests}
-    return read
-
-
-def why(got):
-    return {c['command']: (c['ran'], c['why']) for c in got['readme_commands']}
+from readme_packages import DOG, MIRO, commands_ran, package, reader
 
 
 def test_a_second_world_is_an_alternative_by_its_nodes(tmp_path):
@@ -47,7 +18,7 @@ def test_a_second_world_is_an_alternative_by_its_nodes(tmp_path):
     got = resolve(root, 'my_pkg', 'a', {}, DOG, set(), reader(
         {'random.launch': ['/gazebo', '/dog'], 'fixed.launch': ['/gazebo', '/dog']}))
     assert got['commands'] == ['roslaunch my_pkg random.launch']
-    assert why(got)['roslaunch my_pkg fixed.launch'] == (
+    assert commands_ran(got)['roslaunch my_pkg fixed.launch'] == (
         False, 'left out: also starts /gazebo, an alternative to '
                '`roslaunch my_pkg random.launch`')
     assert got['notes'] == ['`roslaunch my_pkg fixed.launch`: left out: also starts /gazebo, '
@@ -65,8 +36,8 @@ def test_everything_then_the_same_nodes_in_two_terminals(tmp_path):
         {'everything.launch': ['/gazebo', '/dog', '/ball_mover']}))
     assert got['commands'] == ['roslaunch my_pkg everything.launch',
                                'rosrun my_pkg dog.py __name:=dog2']
-    assert why(got)['rosrun my_pkg dog.py'][1].startswith('left out: also starts /dog, an ')
-    assert why(got)['rosrun my_pkg ball.py'][1].startswith('left out: also starts /ball_mover')
+    assert commands_ran(got)['rosrun my_pkg dog.py'][1].startswith('left out: also starts /dog, an ')
+    assert commands_ran(got)['rosrun my_pkg ball.py'][1].startswith('left out: also starts /ball_mover')
 
 
 def test_a_cpp_node_is_named_by_its_ros_init(tmp_path):
@@ -87,7 +58,7 @@ def test_a_readme_naming_another_package_runs_the_submissions_own(tmp_path):
                   reader({'gazebo_world.launch': ['/gazebo']}, seen))
     assert got['commands'] == ['roslaunch my_pkg gazebo_world.launch', 'rosrun my_pkg dog.py',
                                'rosrun gazebo_ros spawn_model x']
-    assert why(got)['roslaunch assignment2 gazebo_world.launch'] == (
+    assert commands_ran(got)['roslaunch assignment2 gazebo_world.launch'] == (
         True, "there is no package assignment2: runs the submission's own (package.xml "
               "names it my_pkg)")
     # $(find assignment2) in its launch files is the submission too
@@ -107,7 +78,7 @@ def test_commands_that_only_watch_are_left_out(tmp_path):
     got = resolve(root, 'my_pkg', 'a', {}, DOG, set(), reader({'w.launch': ['/gazebo']}))
     assert got['commands'] == ['roslaunch my_pkg w.launch']
     assert [c['ran'] for c in got['readme_commands']] == [True] + [False] * 5
-    assert set(why(got)['rqt_graph']) == {
+    assert set(commands_ran(got)['rqt_graph']) == {
         False, 'only watches (a command for another shell): left out'}
 
 
@@ -238,68 +209,3 @@ def test_the_plan_reads_an_archive_on_the_teachers_side(tmp_path, monkeypatch):
             Copies() as copies:
         planning.plan(args, str(tmp_path / 'out'), '0.1', print, planning.read_settings(args),
                       [], copies)
-
-
-def ran(got):
-    return {c['command']: (c['ran'], c['why']) for c in got['readme_commands']}
-
-
-LAUNCHES = {'launch/pet_behavior.launch': '<launch/>', 'launch/gazebo_world.launch': '<launch/>',
-            'launch/world1.launch': '<launch/>', 'launch/world2.launch': '<launch/>',
-            'launch/bell.launch': '<launch/>', 'scripts/state_machine.py': '',
-            'scripts/ball.py': ''}
-
-
-@pytest.mark.parametrize('written, runs, why', [
-    # a typo, a case difference, a node without its .py: the one own name close to it
-    ('roslaunch my_pkg pet_beaviour.launch', 'roslaunch my_pkg pet_behavior.launch',
-     "ran `pet_behavior.launch` for the README's `pet_beaviour.launch`"),
-    ('rosrun my_pkg State_Machine.py', 'rosrun my_pkg state_machine.py',
-     "ran `state_machine.py` for the README's `State_Machine.py`"),
-    ('rosrun my_pkg state_machine', 'rosrun my_pkg state_machine.py',
-     "ran `state_machine.py` for the README's `state_machine`"),
-    # renamed and mistyped: both said
-    ('roslaunch assignment2 gazebo_wrld.launch', 'roslaunch my_pkg gazebo_world.launch',
-     "there is no package assignment2: runs the submission's own (package.xml names it "
-     "my_pkg); ran `gazebo_world.launch` for the README's `gazebo_wrld.launch`"),
-    # near misses that stay as written: two names as close, only an ending in common,
-    # a name that is there, another package's file
-    ('roslaunch my_pkg world.launch', 'roslaunch my_pkg world.launch', ''),
-    ('roslaunch my_pkg ball.launch', 'roslaunch my_pkg ball.launch', ''),
-    ('roslaunch my_pkg world1.launch', 'roslaunch my_pkg world1.launch', ''),
-    ('rosrun my_pkg ball.py', 'rosrun my_pkg ball.py', ''),
-    ('roslaunch gazebo_ros empty_wrld.launch', 'roslaunch gazebo_ros empty_wrld.launch', ''),
-])
-def test_a_name_the_package_does_not_have_runs_the_one_close_to_it(tmp_path, written, runs,
-                                                                   why):
-    root = package(tmp_path, '`%s`\n' % written, LAUNCHES)
-    got = resolve(root, 'my_pkg', 'a', {}, DOG, {'gazebo_ros'}, lambda requests, packages: {
-        r['key']: {'nodes': []} for r in requests})
-    assert got['commands'] == [runs]
-    (item,) = got['readme_commands']
-    assert (item['ran'], item['why']) == (True, why)
-    assert bool(item.get('corrected')) == bool(why)
-    if why:
-        assert got['notes'][0] == '`%s`: %s' % (written, item['why'])
-
-
-def test_every_package_of_the_submission_is_looked_in(tmp_path):
-    """A repository of two packages, its README at the root: a launch file
-    named in the wrong one of them runs from the one that has it."""
-    root = tmp_path / 'repo'
-    for name in ('dog_pkg', 'dog_world'):
-        (root / name / 'launch').mkdir(parents=True)
-        (root / name / 'package.xml').write_text('<package><name>%s</name></package>' % name)
-    (root / 'dog_world' / 'launch' / 'world.launch').write_text('<launch/>')
-    (root / 'README.md').write_text('```\nroslaunch dog_pkg world.launch\n'
-                                    'roslaunch dog_world world.launch\n```\n')
-    packages = {'dog_pkg': str(root / 'dog_pkg'), 'dog_world': str(root / 'dog_world')}
-    seen = []
-    got = resolve(str(root / 'dog_pkg'), 'dog_pkg', 'a', {}, DOG, set(),
-                  reader({'world.launch': ['/gazebo']}, seen), root=str(root),
-                  packages=packages)
-    assert got['commands'] == ['roslaunch dog_world world.launch']
-    assert ran(got)['roslaunch dog_pkg world.launch'] == (
-        True, "dog_pkg has no world.launch: runs package dog_world's")
-    assert ran(got)['roslaunch dog_world world.launch'][1].startswith('left out: also starts')
-    assert seen[0][1]['dog_world'] == packages['dog_world']
