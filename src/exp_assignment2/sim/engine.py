@@ -201,9 +201,6 @@ class Engine(object):
         what it raised); TimeoutError if the loop does not get to it."""
         return self._calls.and_wait(fn, timeout)
 
-    def run_queued(self):
-        self._calls.run()
-
     # stepping
     def step(self):
         """One step: commands, the ball script, physics, the guard, publishers."""
@@ -242,7 +239,7 @@ class Engine(object):
         publishing its clock)."""
         self.pacer.restart(self.time)
         while not self.stop.is_set():
-            self.run_queued()
+            self._calls.run()
             if self.paused:
                 if idle is not None:
                     idle()
@@ -257,7 +254,7 @@ class Engine(object):
     def run_for(self, seconds):
         """Step ``seconds`` of simulated time at once (tests, the benchmark)."""
         for _ in range(int(round(seconds / self.time_step))):
-            self.run_queued()
+            self._calls.run()
             self.step()
 
     # resets
