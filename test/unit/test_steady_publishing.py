@@ -146,6 +146,11 @@ def test_a_slow_reader_gets_whole_messages_in_order_and_only_whole_ones_dropped(
             conn.write_data(framed(i, 400000))
         got = read_messages(theirs, 3)
         assert [(m[0], len(m)) for m in got] == [(0, 400000), (4, 400000), (5, 400000)]
+        # the sender thread counts a message once its sendall returns, which may
+        # be a moment after the reader has the last byte
+        deadline = time.monotonic() + 5
+        while transport.stat_num_msg < 3 and time.monotonic() < deadline:
+            time.sleep(0.01)
         assert transport.stat_num_msg == 3 and transport.stat_bytes == 3 * 400004
         conn.write_data(framed(9, 8))       # all written: at once again
         assert read_messages(theirs, 1) == [bytes([9]) * 8]
