@@ -50,12 +50,39 @@ def line(x0, x1, t0, t1, y=0.0):
 def test_driving_over_a_hidden_ball_is_no_reach():
     """The ball is under the floor (z = -3) where the robot drives through: the
     robot is over it, never near a ball that is there."""
-    got = figure(trace(line(-6, 6, 0, 30), lambda t: (0.0, 0.0, HIDDEN)), 'approaches')
-    assert got[0] is None and 'on the ground and in the arena' in got[1]
-    shown_later = trace(line(-6, 6, 0, 30), lambda t: (0.0, 0.0, HIDDEN if t < 40 else 0.5))
+    shown_later = trace(line(-6, 6, 0, 30), lambda t: (0.0, 0.0, HIDDEN if t < 40 else 0.5),
+                        until=160)
     got = figure(shown_later, 'approaches')
     assert got[0] == 0 and '1 over the ball while it was gone (not counted)' in got[1]
     assert figure(shown_later, 'first_approach_time')[0] is None
+
+
+def test_no_ball_on_the_ground_is_no_occasion_to_reach_it():
+    """The ball appears only when a person types "play" (nobody does): under the
+    floor the whole run, the reach and the first reach are not judged."""
+    never = trace(line(-6, 6, 0, 30), lambda t: (0.0, 0.0, HIDDEN), until=240)
+    for metric in ('approaches', 'first_approach_time'):
+        with pytest.raises(metrics.NotJudged, match='never on the ground in the arena'):
+            figure(never, metric)
+    # lifted out of the arena (the original's z = 20) counts as gone too
+    with pytest.raises(metrics.NotJudged, match='no ball to reach'):
+        figure(trace(still(), lambda t: (0.0, 0.0, 20.0), until=240), 'approaches')
+
+
+def test_the_first_reach_counts_from_the_ball_s_first_time_on_the_ground():
+    """A person node keeps the ball under the floor until 84 s; the dog reaches it at
+    129 s: 45 s after its first occasion, within the 110 s."""
+    ball = lambda t: (4.0, 0.0, HIDDEN if t < 84 else 0.5)             # noqa: E731
+    got = figure(trace(line(-6, 1.0, 122, 129), ball, until=200), 'first_approach_time')
+    assert got[0] == pytest.approx(128.8 - 84, abs=0.3)     # within 3.2 m at x = 0.8
+    assert 'after the ball was first on the ground (t = 84.0 s)' in got[1]
+    # a ball there from the start counts from t = 0, as before
+    assert figure(trace(line(-6, 1.0, 122, 129), lambda t: (4.0, 0.0, 0.5), until=200),
+                  'first_approach_time')[0] == pytest.approx(128.8, abs=0.3)
+    # shown 40 s before the end and never reached: too little time to judge a first reach
+    with pytest.raises(metrics.NotJudged, match='less than the 110 s'):
+        figure(trace(still(-6), lambda t: (4.0, 0.0, HIDDEN if t < 160 else 0.5), until=200),
+               'first_approach_time')
 
 
 def test_a_ball_driven_into_a_parked_robot_is_not_its_reach():
@@ -155,39 +182,85 @@ def test_following_the_moving_ball():
         figure(trace(still(), lambda t: (3, 0, 0.5)), 'follows_ball')
 
 
-def test_the_head_both_ways_at_the_stopped_ball():
-    at_ball = lambda t: (0.0, 0.0, 0.0)      # noqa: E731
-    sweep = trace(at_ball, lambda t: (2.8, 0, 0.5), head=lambda t: 0.8 * math.sin(t))
-    got = figure(sweep, 'looks_both_ways')
-    assert got[0] == 1.0 and got[2] == pytest.approx(math.pi + math.asin(0.5), abs=0.1)
-    one_way = trace(at_ball, lambda t: (2.8, 0, 0.5), head=lambda t: 0.8 * abs(math.sin(t)))
+def arrives(x, at, x0=-6.0):
+    """Drives from (x0, 0) facing +x, at 1 m/s, and rests at (x, 0) from ``at`` s."""
+    return line(x0, x, at - (x - x0), at)
+
+
+def sweep(t0, turn, left=0.5, right=-0.5):
+    """The head to ``left`` for ``turn`` s from ``t0``, then to ``right`` for ``turn`` s,
+    then back to 0."""
+    return lambda t: left if t0 <= t < t0 + turn else right if t0 + turn <= t < t0 + 2 * turn \
+        else 0.0
+
+
+def test_the_head_both_ways_after_the_dog_came_to_rest_at_the_ball():
+    ball = lambda t: (4.0, 0.0, 0.5)                                # noqa: E731
+    got = figure(trace(arrives(1.2, 10), ball, head=sweep(11, 4)), 'looks_both_ways')
+    assert got[0] == 1.0 and 'after 1 of the 1 times' in got[1]
+    assert got[2] == pytest.approx(15.0, abs=0.2)       # the second side reached
+    one_way = trace(arrives(1.2, 10), ball, head=sweep(11, 4, right=0.5))
     assert figure(one_way, 'looks_both_ways')[0] == 0.0
-    far = trace(at_ball, lambda t: (6, 0, 0.5), head=lambda t: 0.8 * math.sin(t))
-    assert figure(far, 'looks_both_ways')[0] == 0.0      # never came to the stopped ball
-    # it came 2 s before the ball rolled on: no time to look, no occasion; a ball rolled
-    # onto the robot (0.2 m: it sees nothing of it) neither
-    late = trace(line(0, 1.2, 6, 8), lambda t: (4 if t < 10 else 4 + (t - 10), 0, 0.5),
-                 until=20, head=lambda t: 0.0)
-    with pytest.raises(metrics.NotJudged, match='came too late to look'):
-        figure(late, 'looks_both_ways')
-    on_it = trace(at_ball, lambda t: (0.2, 0, 0.5), head=lambda t: 0.0)
-    assert figure(on_it, 'looks_both_ways')[0] == 0.0
+    # it came to rest 6 m short of it, or with the ball on it: no arrival at the ball
+    for rest_at in (-2.0, 3.8):
+        with pytest.raises(metrics.NotJudged, match='never came to rest within 3.2 m'):
+            figure(trace(arrives(rest_at, 10), ball, head=sweep(11, 4)), 'looks_both_ways')
+    # a dog spawned beside the ball, which never came to it, has no occasion either
+    with pytest.raises(metrics.NotJudged, match='did not come there'):
+        figure(trace(still(1.2), ball, head=sweep(11, 4)), 'looks_both_ways')
 
 
-def test_a_stop_the_run_s_end_cut_is_an_occasion_only_with_look_and_grace_before_it():
-    """The ball still to the end: the robot came within reach 6.7 s before the end
-    and turned its head one way (the other was to come: a start slowed by a busy
-    machine, seen in CI). A stop that went on would have given it its grace
-    after the stop: here only look + grace before the end is an occasion."""
-    def arrives(at):
-        return lambda t: (0.0 if t < at else min(1.0, t - at), 0.0, 0.0)
+def test_a_sweep_split_by_the_ball_moving_on_counts():
+    """The student's ball node moved the ball on the moment the dog stopped; it next
+    rested behind the dog. The dog looked +0.5 for 4 s, then -0.5 for 4 s: 1 of 1."""
+    ball = lambda t: (4.0, 0.0, 0.5) if t < 10 else (  # noqa: E731
+        line(4.0, -4.0, 10, 14)(t)[0], 0.0, 0.5)
+    got = figure(trace(arrives(1.2, 10), ball, head=sweep(10.5, 4)), 'looks_both_ways')
+    assert got[0] == 1.0 and 'after 1 of the 1 times' in got[1]
+
+
+def test_a_long_sweep_against_short_pauses_of_the_ball_counts_at_every_arrival():
+    """Every 40 s the ball stops at a place 6 m on, rests 20 s, and rolls on; the dog
+    comes to rest 2.8 m short of it 2 s after it stopped and sweeps its head for 26 s
+    (13 s each way), outlasting the ball's pause, then follows: 3 of 3."""
+    def ball(t):
+        k, since = divmod(t, 40.0)
+        return (-5.0 + 6.0 * (k + max(0.0, since - 20.0) / 20.0), 0.0, 0.5)
+
+    def robot(t):
+        k, since = divmod(t - 2.0, 40.0)
+        if t < 2.0:
+            return line(-9.5, -7.8, 0.0, 2.0)(t)
+        x = -7.8 + 6.0 * k + 6.0 * min(1.0, max(0.0, (since - 26.5) / 11.5))
+        return (x, 0.0, 0.0)
+
+    def head(t):
+        since = (t - 2.5) % 40.0
+        return 0.6 if 0 <= since < 13 else -0.6 if since < 26 else 0.0
+    got = figure(trace(robot, ball, until=120, head=head), 'looks_both_ways')
+    assert got[0] == 1.0 and 'after 3 of the 3 times' in got[1], got
+
+
+def test_a_stop_of_the_ball_behind_the_dog_is_no_occasion():
+    """The ball rests behind the dog (out of its camera's view, within reach): the
+    dog never came to it; a head still is not failed for it."""
+    behind = trace(arrives(-1.0, 10), lambda t: (-3.0, 0.0, 0.5), head=lambda t: 0.0)
+    with pytest.raises(metrics.NotJudged, match="out of its camera's view"):
+        figure(behind, 'looks_both_ways')
+
+
+def test_a_look_the_run_s_end_cut_is_an_occasion_only_when_both_sides_came():
+    ball = lambda t: (4.0, 0.0, 0.5)                                # noqa: E731
     one_way_then = lambda t: 0.9 * min(1.0, max(0.0, t - 26.0))    # noqa: E731
-    cut = trace(arrives(23.5), lambda t: (4.2, 0, 0.5), until=30.2, head=one_way_then)
-    with pytest.raises(metrics.NotJudged, match='came too late to look'):
+    cut = trace(arrives(1.2, 23.5), ball, until=30.2, head=one_way_then)
+    with pytest.raises(metrics.NotJudged, match='less than 30 s of the run left to look'):
         figure(cut, 'looks_both_ways')
-    longer = trace(arrives(20.0), lambda t: (4.2, 0, 0.5), until=30.2, head=one_way_then)
+    both = trace(arrives(1.2, 23.5), ball, until=35, head=sweep(25, 3))
+    assert figure(both, 'looks_both_ways')[0] == 1.0
+    # with its window over before the end, a look one way only is failed
+    longer = trace(arrives(1.2, 10), ball, until=45, head=one_way_then)
     got = figure(longer, 'looks_both_ways')
-    assert got[0] == 0.0 and 'at 0 of the 1 stops' in got[1]
+    assert got[0] == 0.0 and 'after 0 of the 1 times' in got[1]
 
 
 def test_wandering_while_the_ball_is_out_of_sight():

@@ -42,7 +42,7 @@ def test_a_dog_that_reaches_the_ball_and_looks_around():
 
 def test_a_dog_that_never_moves():
     states = [{'t': i / 10.0, 'models': {'robot': [0, 0, 0.1, 0], 'ball': [4, 0, 0.5, 0]},
-               'joints': {}} for i in range(100)]
+               'joints': {}} for i in range(1200)]
     got = figures(metrics.Trace(states), DOG)
     assert got['approaches'] == (0, False)
     assert got['first_approach_time'] == (None, False)
@@ -169,7 +169,7 @@ def test_verdicts_tell_causes_apart(tmp_path):
     assert got['reason'] == '5 of 60 simulated s within the wall-clock limit'
     got = judge('ok', {'logs/command-0.log': ''}, states=dog_states())
     assert got['verdict'] == 'passed', got
-    got = judge('still', {'logs/command-0.log': ''}, states=dog_states(wiggle=0.1))
+    got = judge('still', {'logs/command-0.log': ''}, states=dog_states(wiggle=0.1, until=45.0))
     assert (got['verdict'], got['reason']) == (
         'failed_checks', 'failed: head turns both ways at the ball; not judged: follows the '
                          'moving ball, gives up a hidden ball, sleeps at home, wanders')

@@ -1,7 +1,7 @@
 """The assignment's three behaviours, judged from what the robot did (no ROS;
 docs/grading.md, "What works means"): NORMAL (it wanders), SLEEP (it goes home
 and rests), PLAY (it follows the moving ball, turns its head both ways when
-the ball stops, gives the ball up when it is gone).
+it has come to rest at the ball, gives the ball up when it is gone).
 
 Each metric is as :mod:`~exp_assignment2.grading.judge.metrics` has them,
 returning the simulated s its figure was decided at. A behaviour the run gave
@@ -9,8 +9,10 @@ no occasion for (the ball never hidden, never moving, a run too short for a
 sleep that comes at random) raises :class:`NotJudged`, as a role that cannot
 be told does: not judged, its points left for the teacher, never failed.
 """
+import collections
 import math
 
+from exp_assignment2.grading.judge import arrivals
 from exp_assignment2.grading.judge import ball_track as bt
 from exp_assignment2.grading.judge.reach import OUT
 from exp_assignment2.grading.judge.trace import NotJudged, need
@@ -20,9 +22,6 @@ REST = 10.0         # s: a rest this long away from the ball is a sleep (follows
 STILL = 0.3         # m: a robot resting at a place of its own stays this close to it
 STILL_YAW = 0.35    # rad: and turns no more than this
 SLACK = 1.0         # s: a run of its full duration may end a state short of it
-LOOK = 4.0          # s at the stopped ball: time to look around (a later arrival is no occasion)
-ON = 1.0            # m: a ball closer than this is on the robot (rolled through it): unseen
-GRACE = 4.0         # s after a stop a head's turn still answers it (the ball moved on, or hid)
 
 
 def _track(trace, roles, check, ball=True, head=False):
@@ -162,46 +161,30 @@ def follows_ball(trace, roles, check):
 
 
 def looks_both_ways(trace, roles, check):
-    """Share of the ball's stops the robot stayed at (within ``reach``, not on it, awake,
-    ``look`` s) at which it turned its head at least ``angle`` rad to each side, by
-    ``grace`` s after the stop (a stop the run's end cut: ``look`` + ``grace`` s
-    before the end, or it is no occasion)."""
+    """Share of the robot's arrivals at the ball (it came to rest within ``reach`` of
+    a ball in front of its camera it was approaching, awake) after which it turned its
+    head at least ``angle`` rad to each side within ``window`` s, whatever the ball did
+    meanwhile (:mod:`~exp_assignment2.grading.judge.arrivals`)."""
     track = _track(trace, roles, check, head=True)
-    speeds, asleep, reach = bt.ball_speeds(track), _asleep(track, check), _reach(check)
-    angle, grace = float(check.get('angle', 0.3)), float(check.get('grace', GRACE))
-    look = float(check.get('look', LOOK))
-    found = [(a, b) for a, b in bt.stops(track, speeds, float(check.get('stop', 3.0)),
-                                         float(check.get('moving', bt.MOVING)))
-             if sum(k in asleep for k in range(a, b + 1)) * 2 < b - a + 1]
-    stayed, late = [], 0
-    for a, b in found:
-        near = [k for k in range(a, b + 1) if ON < bt.distance(track[k]) <= reach]
-        # a stop the run's end cut: its grace after the stop never came, so the robot
-        # needed that long at the ball before the end to have had the occasion
-        need = look + (grace if b == len(track) - 1 else 0.0)
-        if near and track[b].t - track[near[0]].t >= need:
-            stayed.append((near[0], b))
-        late += bool(near) and track[b].t - track[near[0]].t < need
-    if not stayed:
-        if found and not late:
-            return 0.0, '%s: the ball stopped %d times; the robot came within %g m of it at ' \
-                'none' % (roles.head.name, len(found), reach), track[found[0][0]].t
-        raise NotJudged('the robot stayed %g s at none of the ball\'s stops (it stopped %d '
-                        'times while the robot was awake; %d times it came too late to look)'
-                        % (look, len(found), late))
-    swept, at = 0, None
-    for near, b in stayed:
-        until = track[b].t + grace
-        during = [s for s in track[near:] if s.t <= until]
-        left = next((s.t for s in during if (s.head or 0.0) >= angle), None)
-        right = next((s.t for s in during if (s.head or 0.0) <= -angle), None)
-        if left is not None and right is not None:
-            swept += 1
-            at = at if at is not None else max(left, right)
-    return round(swept / float(len(stayed)), 3), '%s: at %d of the %d stops of the ball it ' \
-        'stayed at (within %g m, %g s), turned the head at least %g rad each way' % (
-            roles.head.name, swept, len(stayed), reach, look, angle), \
-        at if at is not None else track[stayed[0][0]].t
+    reach, angle = _reach(check), float(check.get('angle', 0.3))
+    window = float(check.get('window', arrivals.WINDOW))
+    found = arrivals.arrivals(track, reach, bt.Sight(trace, roles, check),
+                              _asleep(track, check))
+    seen = arrivals.looks(track, found, angle, window)
+    counted = [look for look in seen if not look.cut or look.left and look.right]
+    if not counted and seen:
+        raise NotJudged('the robot came to rest at the ball %d times, each with less than %g s '
+                        'of the run left to look around' % (len(seen), window))
+    if not counted:
+        why = collections.Counter(w for _, w, _ in found if w)
+        raise NotJudged('the robot never came to rest within %g m of the ball in front of it '
+                        '(%d rests%s)' % (reach, len(found), ''.join(
+                            '; %d: %s' % (n, w) for w, n in why.most_common(3))))
+    swept = [look for look in counted if look.left is not None and look.right is not None]
+    return round(len(swept) / float(len(counted)), 3), '%s: after %d of the %d times it ' \
+        'came to rest within %g m of the ball (in view), turned the head at least %g rad each ' \
+        'way within %g s' % (roles.head.name, len(swept), len(counted), reach, angle, window), \
+        swept[0].done if swept else counted[0].t
 
 
 def gives_up_ball(trace, roles, check):

@@ -42,13 +42,21 @@ def _said(track, found, check):
                     if hidden else ''])
 
 
+def _first_there(track, roles):
+    """The first sample the ball was there (on the ground, in the arena), or
+    :class:`NotJudged`: the run gave the robot no ball to reach."""
+    first = next((s for s in track if s.there), None)
+    if first is None:
+        raise NotJudged('%s was never on the ground in the arena beside %s: no ball to reach'
+                        % (roles.ball.name, roles.robot.name))
+    return first
+
+
 def approaches(trace, roles, check):
     """Times the robot reached a ball that was there, by its own motion (:mod:`.reach`)."""
     track, found = _stays(trace, roles, check)
+    _first_there(track, roles)
     near = [ball_track.distance(s) for s in track if s.there]
-    if not near:
-        return None, 'no pose of %s on the ground and in the arena beside %s' % (
-            roles.ball.name, roles.robot.name)
     mine = [s for s in found if s.robots]
     return len(mine), 'closest %.2f m; within %.2f m %d times%s' % (
         min(near), reach_.settings(check)[0], len(mine), _said(track, found, check)), \
@@ -57,12 +65,25 @@ def approaches(trace, roles, check):
 
 
 def first_approach_time(trace, roles, check):
+    """s from the ball's first time on the ground in the arena (the robot's first
+    occasion to reach it) to the robot's first reach."""
     track, found = _stays(trace, roles, check)
+    first = _first_there(track, roles)
+    start = first.t if first.t > track[0].t + 1.0 else 0.0     # there from the start: t = 0
     mine = [s for s in found if s.robots]
     if not mine:
+        limit = check.get('max')
+        if limit is not None and track[-1].t - start < float(limit):
+            raise NotJudged('the ball was first on the ground at t = %.1f s, %.0f s before the '
+                            'run\'s end: less than the %g s a first reach is given' % (
+                                start, track[-1].t - start, float(limit)))
         return None, 'never reached it within %.2f m%s' % (reach_.settings(check)[0],
                                                              _said(track, found, check))
-    return round(mine[0].at, 1), 'at t = %.1f s' % mine[0].at, mine[0].at
+    took = mine[0].at - start
+    detail = 'at t = %.1f s' % mine[0].at
+    if start:
+        detail += ', %.1f s after the ball was first on the ground (t = %.1f s)' % (took, start)
+    return round(took, 1), detail, mine[0].at
 
 
 def head_turn_near_ball(trace, roles, check):

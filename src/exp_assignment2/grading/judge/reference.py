@@ -3,20 +3,23 @@
 (:mod:`~exp_assignment2.grading.plan.calibration`).
 
 Two passes over the run's ground truth: first the distances the reference
-keeps (:func:`distances`: where it stopped to look at the stopped ball, how
-far it trailed the moving one, how far it turned its head), then, with the
+keeps (:func:`distances`: where it came to rest at the ball to look around,
+how far and how long it turned its head, how far it trailed the moving
+ball), then, with the
 settings made of them, the profile's own metrics on the same run
 (:func:`figures`): what each check would give the reference, and the
 shortest run in which it showed every behaviour (:func:`shown_by`).
 """
 import math
 
+from exp_assignment2.grading.judge import arrivals
 from exp_assignment2.grading.judge import ball_track as bt
 from exp_assignment2.grading.judge import behaviours, metrics
 from exp_assignment2.grading.judge.trace import NotJudged
 from exp_assignment2.grading.plan.profile_keys import with_shared
 
-SWEEP = 0.3          # rad: a head turned this far at a stop is looking around
+SWEEP = 0.3          # rad: a head turned this far each way after an arrival is looking around
+LONGEST = 120.0      # s after an arrival a reference's look is waited for
 
 
 def percentile(values, share):
@@ -27,25 +30,26 @@ def percentile(values, share):
 
 
 def distances(trace, roles, check):
-    """{'stop_distances': [m from the ball where the head turned widest at each stop
-    it looked around at], 'sweeps': [rad the head turned each way there, the lesser],
+    """{'stop_distances': [m from the ball where it came to rest at each arrival after
+    which it looked around], 'sweeps': [rad the head turned each way then, the lesser],
+    'sweep_times': [s from the arrival to the head's second side],
     'trailing': [m to the moving ball while it was in view, the robot awake]}."""
     track = bt.samples(trace, roles.robot.name, roles.ball.name, roles.head.name,
                        check.get('arena'))
     speeds, sight = bt.ball_speeds(track), bt.Sight(trace, roles, check)
     asleep = behaviours._asleep(track, check)
-    grace = float(check.get('grace', behaviours.GRACE))
-    out = {'stop_distances': [], 'sweeps': [], 'trailing': []}
-    for a, b in bt.stops(track, speeds, float(check.get('stop', 3.0))):
-        during = [(k, s) for k, s in enumerate(track[a:], a)
-                  if s.t <= track[b].t + grace and s.head is not None]
-        if not during:
+    out = {'stop_distances': [], 'sweeps': [], 'sweep_times': [], 'trailing': []}
+    found = arrivals.arrivals(track, float('inf'), sight, asleep)
+    rest_end = {track[i0].t: track[i1].t for i0, _, i1 in found}
+    for look in arrivals.looks(track, found, SWEEP, LONGEST):
+        if look.left is None or look.right is None:
             continue
-        widest = max(during, key=lambda p: abs(p[1].head))
-        sweep = min(max(s.head for _, s in during), -min(s.head for _, s in during))
-        if sweep >= SWEEP:
-            out['stop_distances'].append(round(bt.distance(widest[1]), 3))
-            out['sweeps'].append(round(sweep, 3))
+        # how far it looked: the head while it stayed there (or until the look's end)
+        until = max(look.done, rest_end[look.t])
+        during = [s.head for s in track if look.t <= s.t <= until and s.head is not None]
+        out['stop_distances'].append(look.distance)
+        out['sweeps'].append(round(min(max(during), -min(during)), 3))
+        out['sweep_times'].append(round(look.done - look.t, 1))
     for i, s in enumerate(track):
         if speeds[i] is not None and speeds[i] >= bt.MOVING and i not in asleep \
                 and sight.sees(s):

@@ -30,6 +30,8 @@ EPISODES = 3
 MARGIN = 0.1         # the distances and durations the reference needs, + 10 %
 SLACK = 0.8          # the shares it reached, less 20 %
 HALF = 0.5           # what the assignment sets no number for (an angle, a sleep, places): half
+WINDOW = 30.0        # s after an arrival the head is judged over, at the least
+LOOK_MARGIN = 0.25   # the reference's slowest look both ways, + 25 %
 
 
 def _down(value, step):
@@ -55,8 +57,8 @@ def derive(profile, traces, say):
     stops = [d for f in found for d in f['stop_distances']]
     if stops:
         out['reach'] = reference.round_up(max(stops) * (1 + MARGIN), 0.1)
-        say('reach %.1f m: the reference stopped to look around %.2f to %.2f m from the '
-            'stopped ball (%d stops); the largest + 10 %%' % (out['reach'], min(stops),
+        say('reach %.1f m: the reference came to rest to look around %.2f to %.2f m from '
+            'the ball (%d arrivals); the largest + 10 %%' % (out['reach'], min(stops),
                                                               max(stops), len(stops)))
     sweeps = [s for f in found for s in f['sweeps']]
     if sweeps:
@@ -64,6 +66,12 @@ def derive(profile, traces, say):
         _set(out, 'looks_both_ways', angle=angle)
         say('head angle %.2f rad each way: the reference turned its head %.2f rad each way (at '
             'the least); half that (the assignment sets no angle)' % (angle, min(sweeps)))
+    times = [s for f in found for s in f['sweep_times']]
+    if times:
+        window = max(WINDOW, reference.round_up(max(times) * (1 + LOOK_MARGIN), 5.0))
+        _set(out, 'looks_both_ways', window=window)
+        say('head judged %g s after each arrival: the reference\'s slowest look both ways took '
+            '%.1f s; + 25 %%, at least %g s' % (window, max(times), WINDOW))
     trailing = [d for f in found for d in f['trailing']]
     if trailing:
         follow = reference.round_up(reference.percentile(trailing, 0.75) * (1 + MARGIN), 0.5)
@@ -84,7 +92,7 @@ def _thresholds(out, figures, say):
     for metric, words in (('follows_ball', 'kept within %(follow)g m of the moving ball %(got)s '
                                            'of the time'),
                           ('looks_both_ways', 'turned its head both ways at %(got)s of the '
-                                              'ball\'s stops it stayed at')):
+                                              'times it came to rest at the ball')):
         got = _values(figures, metric)
         if got:
             low = max(0.05, _down(min(v for v, _ in got) * SLACK, 0.05))
