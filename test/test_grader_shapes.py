@@ -76,8 +76,8 @@ def test_a_course_repository_runs_this_assignment_only(graded):
         'explorer': (False, 'not built: nothing the run starts uses it')}
     left = {c['command']: c['why'] for c in run['readme_commands'] if not c['ran']}
     assert left['roslaunch assignment1 turtles.launch'] == (
-        "left out: another part of the README (`Assignment 1: turtles`) starts assignment1, "
-        "not this assignment's exp_assignment2")
+        "left out: another part of the README (`Assignment 1: turtles` of README.md) starts "
+        "assignment1, not this assignment's exp_assignment2")
     assert 'Packages (3 found, 1 built)' in _page(graded, 'course_repo')
 
 

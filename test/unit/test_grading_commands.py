@@ -58,12 +58,39 @@ def test_start_from_teacher_readme_or_profile(tmp_path):
     assert got['readme_commands'][-1]['why'] == 'a build step: the grader builds the ' \
         'submission itself'
     empty = tmp_path / 'empty'
-    empty.mkdir()
+    (empty / 'launch').mkdir(parents=True)
+    (empty / 'launch' / 'w.launch').write_text('<launch/>')
     got = resolve(str(empty), 'my_pkg', 'carol', {}, profile, set(), no_launch_files)
     assert (got['commands'], got['commands_from']) == (['roslaunch my_pkg w.launch'],
                                                        "the profile's default")
     assert got['notes'] == ["no roslaunch or rosrun line to run in a README (there is none): "
                             "the profile's default"]
+
+
+def test_a_default_the_package_does_not_have_is_never_run(tmp_path):
+    """The profile's default names w.launch; the package has its own launch files:
+    the one that starts the rest (included by none, starting the simulator) runs in
+    its place; with no such one, nothing runs, and the note says why."""
+    profile = {'world_commands': [], 'default_commands': ['roslaunch {package} w.launch']}
+    launch = tmp_path / 'launch'
+    launch.mkdir()
+    (launch / 'sim.launch').write_text(
+        '<launch><include file="$(find gazebo_ros)/launch/empty_world.launch"/></launch>')
+    (launch / 'everything.launch').write_text(
+        '<launch><include file="$(find my_pkg)/launch/sim.launch"/><node pkg="my_pkg" '
+        'type="dog.py" name="dog"/></launch>')
+    (launch / 'nodes.launch').write_text('<launch><node pkg="my_pkg" type="b.py" name="b"/>'
+                                         '</launch>')
+    got = resolve(str(tmp_path), 'my_pkg', 'dan', {}, profile, set(), no_launch_files)
+    assert got['commands'] == ['roslaunch my_pkg everything.launch']
+    assert "my_pkg has no w.launch; ran its launch file that starts the rest, " \
+        "`roslaunch my_pkg everything.launch`" in got['notes'][-1]
+    (launch / 'everything.launch').unlink()
+    (launch / 'other.launch').write_text(
+        '<launch><include file="$(find gazebo_ros)/launch/empty_world.launch"/></launch>')
+    got = resolve(str(tmp_path), 'my_pkg', 'dan', {}, profile, set(), no_launch_files)
+    assert got['commands'] == [] and 'no one launch file of its own starts the rest ' \
+        '(nodes.launch, other.launch, sim.launch): not run' in got['notes'][-1]
 
 
 @pytest.mark.parametrize('text, message', [

@@ -33,6 +33,22 @@ def test_what_the_submission_says(tmp_path):
         'kinetic', 'its catkin workspace was made in ROS Kinetic (src/CMakeLists.txt)')
 
 
+def test_a_vendored_package_s_readme_does_not_say_the_release(tmp_path):
+    """A repository that carries slam_gmapping's sources: that package's README says
+    "melodic"; the student's own README says Kinetic, once."""
+    repo = tmp_path / 'repo'
+    write(repo, 'README.md', 'Written for ROS Kinetic.')
+    write(repo, 'my_dog/package.xml', '<package><name>my_dog</name></package>')
+    write(repo, 'slam_gmapping/package.xml', '<package><name>slam_gmapping</name></package>')
+    write(repo, 'slam_gmapping/README.md', 'melodic, melodic: see the melodic-devel branch')
+    write(repo, 'slam_gmapping/docker/Dockerfile', 'FROM ros:melodic\n')
+    got = ros_release.said(str(repo), package_dir=str(repo / 'my_dog'))
+    assert got == ('kinetic', 'its README.md says "Kinetic"')
+    # the graded package's own README counts, wherever it is
+    write(repo, 'my_dog/README.md', 'Noetic, Noetic.')
+    assert ros_release.said(str(repo), package_dir=str(repo / 'my_dog'))[0] == 'noetic'
+
+
 def test_what_differs_between_releases_for_a_submission(tmp_path):
     write(tmp_path / 'legacy', 'urdf/robot.gazebo', DIFF_DRIVE % '<legacyMode>true</legacyMode>')
     found = ros_release.features(str(tmp_path / 'legacy'))

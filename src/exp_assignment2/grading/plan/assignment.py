@@ -70,31 +70,54 @@ def section_of(text, command):
     return heading
 
 
-def other_sections(readme_text, entries, found, main):
-    """{command: why} for the README's commands in sections about another
-    assignment: sections whose commands start only the submission's
-    packages that main neither uses nor is used by. Nothing when the README
-    has one section of commands, or the submission one package."""
-    if len(found) < 2 or not readme_text:
+def _starts(entry, entries, found, root):
+    """The packages (by name, the submission's or not) a README entry starts: a
+    ``roslaunch``/``rosrun``'s, a start script's lines'."""
+    if entry['kind'] == 'script':
+        index = entries.index(entry)
+        return set().union(*[_starts(e, entries, found, root) for e in entries
+                             if e.get('of') == index] or [set()])
+    word = _package_word(entry['command'])
+    if word:
+        return {word}
+    return set(packages_._started(entry['command'], found, root, entry.get('cwd') or ''))
+
+
+def other_sections(texts, entries, found, main, root=None):
+    """{command: why} for the README's commands about another exercise of a
+    repository holding several (it has packages main neither uses nor is used by).
+    The README's parts are its sections (each README read: the root's, then those on
+    the way down to main's folder); a part whose commands start nothing main is
+    linked to (only the submission's other packages, or only others' programs such
+    as a Stage world of exercise 1) is left out when another part does start main,
+    its lines with it. Nothing for a submission of one package, or of packages
+    all linked to main."""
+    if len(found) < 2 or not texts:
         return {}
     own = {p.name for p in found}
     linked = connected(found, main)
-    sections = {}
+    if not own - linked:            # one assignment in several packages
+        return {}
+    parts = {}
     for entry in entries:
-        if entry.get('kind') not in ('ros', 'script'):
-            continue
-        sections.setdefault(section_of(readme_text, entry['command']), []).append(entry)
-    if len(sections) < 2:
+        if entry.get('kind') in ('ros', 'script') and entry.get('of') is None:
+            readme = entry['from']
+            parts.setdefault((readme, section_of(texts.get(readme, ''), entry['command'])),
+                             []).append(entry)
+    started = {key: set().union(*[_starts(e, entries, found, root) for e in listed])
+               for key, listed in parts.items()}
+    if not any(s & linked for s in started.values()):
         return {}
     out = {}
-    for heading, listed in sections.items():
-        started = {_package_word(e['command']) for e in listed} - {None}
-        if heading is None or not started or not started <= own or started & linked:
+    for (readme, heading), listed in parts.items():
+        if not started[(readme, heading)] or started[(readme, heading)] & linked:
             continue
+        where = '`%s` of %s' % (heading, readme) if heading else readme
         for entry in listed:
-            out[entry['command']] = ('left out: another part of the README (`%s`) starts %s, '
+            out[entry['command']] = ('left out: another part of the README (%s) starts %s, '
                                      'not this assignment\'s %s' % (
-                                         heading, ', '.join(sorted(started)), main.name))
+                                         where, ', '.join(sorted(started[(readme, heading)])),
+                                         main.name))
     return out
 
 

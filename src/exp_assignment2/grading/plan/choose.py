@@ -137,6 +137,17 @@ def rosrun_node(parts, ctx):
         p for p in ns.split('/') + [name] if p)
 
 
+def names_something(parts, cwd, ctx):
+    """Does a ``roslaunch``/``rosrun`` name a launch file or node the run has (the
+    submission's, by its name or one close to it, or a package the machine has)?"""
+    if parts['package'] is None:
+        path = os.path.normpath(os.path.join(ctx.root, cwd, parts['name']))
+        return own_names.inside(ctx.root, path) and os.path.isfile(path) or \
+            find_own(ctx, parts['tool'], os.path.basename(parts['name'])) is not None
+    return parts['package'] in ctx.provided and parts['package'] not in ctx.packages or \
+        find_own(ctx, parts['tool'], parts['name'], prefer=parts['package']) is not None
+
+
 def own_command(parts, cwd, ctx):
     """(the parts run, why they differ from the README's, or '') for a
     ``roslaunch``/``rosrun`` of the README: as written when it names what is
@@ -193,6 +204,12 @@ def _launch_request(key, parts, cwd, ctx):
             'args': [w for w in parts['args'] if ':=' in w]}
 
 
+def typo_note(entry):
+    """The words for a command word the README mistyped (commands.typed)."""
+    return 'the README types `%s`: read as `%s`, as the person typing it does after ' \
+        '"command not found"' % (entry['typed'], shell_words(entry['command'])[0])
+
+
 def _left_out(entry):
     """Why an entry is not run by itself (None: it may run)."""
     if entry.get('left_out'):       # decided before: another assignment's part of the README
@@ -200,7 +217,7 @@ def _left_out(entry):
     if entry['kind'] == 'watch':
         return 'only watches (a command for another shell): left out'
     if entry['kind'] == 'build':
-        return BUILD_STEP
+        return BUILD_STEP + ('; ' + typo_note(entry) if entry.get('typed') else '')
     if entry['kind'] == 'script':
         return ('a start script: its roslaunch/rosrun lines are read, not the script run'
                 if entry.get('script') else 'a start script that is not in the submission: '
@@ -230,7 +247,13 @@ def choose(entries, ctx, read_launches):
         if _simulator(parts) and ctx.world:
             item['why'] = "a simulator the profile's world replaces: left out"
             continue
+        if entry.get('plain') and not names_something(parts, entry.get('cwd', ''), ctx):
+            item['why'] = 'plain text that names no launch file or node of the run: a ' \
+                'sentence, not a command: left out'
+            continue
         parts, item['why'] = own_command(parts, entry.get('cwd', ''), ctx)
+        if entry.get('typed'):
+            item['why'] = '; '.join(w for w in (typo_note(entry), item['why']) if w)
         if item['why']:
             item['corrected'] = True
         item['run'] = ros_line(parts)

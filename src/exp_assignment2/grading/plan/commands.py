@@ -44,19 +44,39 @@ VALUED = {'roslaunch': {'-p', '--port', '-c', '--child', '-u', '--server_uri', '
                         '--sigterm-timeout'},
           'rosrun': {'--prefix'}}
 LAUNCH_PATH = ('.launch', '.xml', '.test')
+# the command words a person types from a README, and mistypes: within TYPO letters
+# (one wrong, left out, added or two swapped, each) a word that is no command of its own is
+# read as the one it is close to, as the person reading "command not found" types it again
+TYPED = ('roslaunch', 'rosrun', 'catkin_make', 'rostopic', 'rosservice', 'source')
+TYPO = 2
+# commands of their own a few letters from those: never read as another
+KNOWN = {'roscd', 'rosls', 'rosed', 'roscp', 'rosbag', 'rosmsg', 'rossrv', 'rosnode', 'rospack',
+         'rosparam', 'roscore', 'rosdep', 'rostest', 'rosunit', 'roswtf', 'rosclean', 'rospy',
+         'roscpp', 'catkin', 'cmake', 'make', 'sudo', 'course', 'resource'}
+# a line of plain text that begins with a command: after a list's mark or a prompt
+PLAIN = re.compile(r'^\s*(?:[-*+]\s+|\d+[.)]\s+|[$>]\s*)?([A-Za-z_]+)\s+\S+')
+PROMPT = re.compile(r'^(\s*(?:[^\s$#>%]*[$#>%]\s+)?)([A-Za-z_][\w-]*)(?=\s|$)')
 
 
 def _code_texts(text):
-    """The README's code: fenced blocks' lines and inline code spans."""
+    """[(code, plain)] of the README: fenced blocks' lines and inline code spans
+    (``plain`` False), and lines of plain text that begin with ``roslaunch`` or
+    ``rosrun`` (``plain`` True: a README written without code marks is typed as
+    well; such a line runs only when it names something the run has, see
+    :mod:`~exp_assignment2.grading.plan.choose`)."""
     texts, fenced = [], False
     for line in text.splitlines():
         if re.match(r'^\s*(```|~~~)', line):
             fenced = not fenced
             continue
         if fenced or line.startswith('    ') or line.startswith('\t'):
-            texts.append(line)
-        else:
-            texts.extend(re.findall(r'`([^`\n]+)`', line))
+            texts.append((line, False))
+            continue
+        spans = re.findall(r'`([^`\n]+)`', line)
+        texts.extend((span, False) for span in spans)
+        bare = PLAIN.match(line)
+        if not spans and bare and command_word(bare.group(1)) in ('roslaunch', 'rosrun'):
+            texts.append((line[bare.start(1):].strip().rstrip('.'), True))
     return texts
 
 
@@ -117,17 +137,57 @@ def kind_of(command):
     return 'watch'
 
 
+def _distance(a, b):
+    """Letters changed, left out, added or swapped (two side by side) from ``a`` to ``b``."""
+    rows = [list(range(len(b) + 1))]
+    for i in range(1, len(a) + 1):
+        row = [i] + [0] * len(b)
+        for j in range(1, len(b) + 1):
+            row[j] = min(rows[-1][j] + 1, row[j - 1] + 1,
+                         rows[-1][j - 1] + (a[i - 1] != b[j - 1]))
+            if i > 1 and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
+                row[j] = min(row[j], rows[-2][j - 2] + 1)
+        rows.append(row)
+    return rows[-1][-1]
+
+
+def command_word(word):
+    """The command word a person meant by ``word`` (:data:`TYPED`), or None: the
+    word itself, or the one within :data:`TYPO` letters of it when it is no command of
+    its own and no other is as close."""
+    if word in TYPED or word in KNOWN or len(word) < 4:
+        return word if word in TYPED else None
+    near = sorted((_distance(word.lower(), t), t) for t in TYPED)
+    if near[0][0] <= min(TYPO, len(near[0][1]) // 3) and \
+            (len(near) < 2 or near[1][0] > near[0][0]):
+        return near[0][1]
+    return None
+
+
+def typed(segment):
+    """(the segment as the person types it, the README's word it corrects or None)."""
+    match = PROMPT.match(segment)
+    if not match:
+        return segment, None
+    meant = command_word(match.group(2))
+    if meant is None or meant == match.group(2):
+        return segment, None
+    return segment[:match.start(2)] + meant + segment[match.end(2):], match.group(2)
+
+
 def _pieces(code):
-    """[('cd', tool, target) or ('command', text)] of one line of code."""
+    """[('cd', tool, target) or ('command', text, the mistyped word or None)] of one
+    line of code."""
     found = []
     for segment, _ in shell.segments(code):
         match = CD.search(segment)
         if match:
             found.append(('cd', match.group(1), match.group(2) or ''))
             continue
+        segment, mistyped = typed(segment)
         match = BUILD.search(segment) or STARTS.search(segment)
         if match:
-            found.append(('command', _clean(match.group(1))))
+            found.append(('command', _clean(match.group(1)), mistyped))
     return found
 
 
@@ -159,11 +219,22 @@ def build_packages(command):
     return list(dict.fromkeys(names))
 
 
+def _chain(root, package_dir):
+    """The folders from ``root`` down to ``package_dir``, both included."""
+    rel = os.path.relpath(package_dir, root)
+    if rel == '.' or rel.startswith('..'):
+        return [root] if rel == '.' else [root, package_dir]
+    parts = rel.split(os.sep)
+    return [root] + [os.path.join(root, *parts[:k]) for k in range(1, len(parts) + 1)]
+
+
 def _readmes(root, package_dir):
-    """[(name relative to root, path)]: the root's README, then the main
-    package's when it is another file that says something else."""
+    """[(name relative to root, path)]: the root's README, then each README on the
+    way down to the main package's folder (a repository of the course: its own
+    README, the assignment's folder's, the package's), each when it says something
+    else."""
     found = []
-    for folder in (root, package_dir):
+    for folder in _chain(root, package_dir):
         for name in README_NAMES:
             path = os.path.join(folder, name)
             if os.path.isfile(path):
@@ -174,9 +245,9 @@ def _readmes(root, package_dir):
     return found
 
 
-def readme_text(root, package_dir=None):
-    """The text of the README(s) :func:`readme_entries` reads, one after the other."""
-    return '\n'.join(read_text(path) for _, path in _readmes(root, package_dir or root))
+def readme_texts(root, package_dir=None):
+    """{name relative to root: text} of the README(s) :func:`readme_entries` reads."""
+    return {name: read_text(path) for name, path in _readmes(root, package_dir or root)}
 
 
 def _script(root, cwd, command):
@@ -232,12 +303,14 @@ def readme_entries(root, package_dir=None, packages=None):
     for name, path in _readmes(root, package_dir):
         names.append(name)
         cwd = _folder(root, os.path.dirname(path))
-        for code in _code_texts(read_text(path)):
+        for code, plain in _code_texts(read_text(path)):
             for piece in _pieces(code):
                 if piece[0] == 'cd':
                     cwd = cd(piece[1], cwd, piece[2])
                     continue
-                index = add(piece[1], name, cwd)
+                extra = dict({'typed': piece[2]} if piece[2] else {}, **(
+                    {'plain': True} if plain else {}))
+                index = add(piece[1], name, cwd, **extra)
                 if index is None or entries[index]['kind'] != 'script':
                     continue
                 script, runs_in = _script(root, cwd, piece[1])

@@ -80,15 +80,20 @@ def find(root):
     return sorted(found, key=lambda p: (p.rel.count(os.sep), p.rel))
 
 
+def _uses(names):
+    """The pattern of another package's use in a file (its name in group 1)."""
+    return re.compile(r'(?:\$\(find\s+|pkg\s*=\s*["\']|\bimport\s+|\bfrom\s+|#include\s*[<"]'
+                      r'|\bCOMPONENTS\b[^)]*?\b|\$\(find-pkg-share\s+)(%s)\b'
+                      % '|'.join(re.escape(n) for n in sorted(names, key=len, reverse=True)))
+
+
 def references(package, names):
     """The names of ``names`` (other packages of the submission) that this
     package uses: its package.xml, its launch files' ``$(find X)`` and
     ``pkg="X"``, its code's ``import X`` / ``from X.msg`` / ``#include <X/``,
     its CMakeLists.txt's components."""
     used = {d for d in package.depends if d in names}
-    wanted = re.compile(r'(?:\$\(find\s+|pkg\s*=\s*["\']|\bimport\s+|\bfrom\s+|#include\s*[<"]'
-                        r'|\bCOMPONENTS\b[^)]*?\b|\$\(find-pkg-share\s+)(%s)\b'
-                        % '|'.join(re.escape(n) for n in sorted(names, key=len, reverse=True)))
+    wanted = _uses(names)
     for dirpath, dirnames, filenames in os.walk(package.path):
         dirnames[:] = [d for d in dirnames if d not in SKIPPED and not d.startswith('.')]
         for name in filenames:
@@ -98,25 +103,33 @@ def references(package, names):
     return used
 
 
-def _started(command, packages, root):
-    """The package (by name) a ``roslaunch``/``rosrun`` command starts, if it
-    is one of the submission's; a launch file given by its path: the package
-    that holds it."""
+def _started(command, packages, root=None, cwd=''):
+    """The packages (by name) a ``roslaunch``/``rosrun`` command starts, of the
+    submission's; a launch file given by its path: the package that holds it, or,
+    for a launch file in no package (``roslaunch all.launch`` at a repository's
+    root), the packages it starts and finds (``pkg="X"``, ``$(find X)``)."""
     try:
         words = shlex.split(command)
     except ValueError:
-        return None
+        return []
     if not words or words[0] not in ('roslaunch', 'rosrun'):
-        return None
+        return []
     args = [w for w in words[1:] if not w.startswith('-') and ':=' not in w]
     by_name = {p.name: p for p in packages}
     if len(args) >= 2 and args[0] in by_name:
-        return args[0]
-    if words[0] == 'roslaunch' and args and args[0].endswith('.launch'):
-        for package in sorted(packages, key=lambda p: -len(p.rel)):
-            if os.path.basename(args[0]) in _launch_files(package):
-                return package.name
-    return None
+        return [args[0]]
+    if words[0] != 'roslaunch' or not args or not args[0].endswith(('.launch', '.xml')):
+        return []
+    path = os.path.normpath(os.path.join(root, cwd, args[0])) if root else None
+    if path and os.path.isfile(path):
+        holder = [p for p in packages if path.startswith(os.path.normpath(p.path) + os.sep)]
+        if holder:
+            return [holder[0].name]
+        return sorted(set(_uses(by_name).findall(read_text(path))))
+    for package in sorted(packages, key=lambda p: -len(p.rel)):
+        if os.path.basename(args[0]) in _launch_files(package):
+            return [package.name]
+    return []
 
 
 def _launch_files(package):
@@ -144,19 +157,22 @@ def main_package(packages, launch_names=(), preferred=()):
     return usable[0]
 
 
-def choose(packages, main, commands, also=()):
+def choose(packages, main, commands, also=(), root=None):
     """([{'name', 'rel', 'built', 'why'}] for every package, in the order
     catkin builds them first; the built ones' Packages, ``main`` first).
-    What a run builds: ``main``, the packages its ``commands`` start, those
-    named in ``also`` (the README's ``catkin build PKG``), and everything of
-    the submission they use, transitively. Of two packages with one name,
-    the one used (else the shallowest) is built, as catkin takes one."""
+    What a run builds: ``main``, the packages its ``commands`` start (each a
+    line, or a start's {'command', 'cwd'}: a launch file's path is from its folder
+    under ``root``), those named in ``also`` (the README's ``catkin build PKG``),
+    and everything of the submission they use, transitively. Of two packages with
+    one name, the one used (else the shallowest) is built, as catkin takes one."""
     by_name = {}
     for package in packages:
         if package.name not in by_name or package is main:
             by_name[package.name] = package
     names = set(by_name)
-    started = [n for n in (_started(c, list(by_name.values()), None) for c in commands) if n]
+    started = [n for c in commands for n in (
+        _started(c, list(by_name.values())) if isinstance(c, str) else
+        _started(c['command'], list(by_name.values()), root, c.get('cwd') or ''))]
     wanted = [main.name] + [n for n in also if n in names] + started
     uses = {}
     needed, queue = set(), list(wanted)

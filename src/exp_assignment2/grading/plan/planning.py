@@ -21,6 +21,7 @@ import os
 
 from exp_assignment2.grading.plan import assignment
 from exp_assignment2.grading.plan import build_deps
+from exp_assignment2.grading.plan import defaults
 from exp_assignment2.grading.plan import deadlines
 from exp_assignment2.grading.plan import episodes as episodes_
 from exp_assignment2.grading.plan import git_entries
@@ -31,7 +32,7 @@ from exp_assignment2.grading.plan import starts
 from exp_assignment2.grading.plan import packages as packages_
 from exp_assignment2.grading.plan.choose import Context, aliases, choose
 from exp_assignment2.grading.plan.commands import TeacherFileError, read_teacher_file, \
-    readme_entries, readme_text
+    readme_entries, readme_texts
 from exp_assignment2.grading.paths import PACKAGE
 from exp_assignment2.grading.record import traceback_line
 from exp_assignment2.grading.plan.spec import RunSpec, settings
@@ -60,7 +61,7 @@ def resolve(package_dir, package, name, teacher, profile, provided, read_launche
     submission's folder (its README is read there first, then in
     ``package_dir``; the commands' folders are relative to it);
     ``packages``: {name: folder} of all its packages;
-    ``other_parts(entries, readme_text)``: {command: why} of the README's
+    ``other_parts(entries, readme_texts)``: {command: why} of the README's
     commands about another assignment (assignment.other_sections)."""
     root = root or package_dir
     own_packages = dict(packages or {package: package_dir})
@@ -86,7 +87,7 @@ def resolve(package_dir, package, name, teacher, profile, provided, read_launche
                 start['cwd'] = ''
     else:
         entries, readme = readme_entries(root, package_dir, ctx.packages)
-        others = other_parts(entries, readme_text(root, package_dir)) \
+        others = other_parts(entries, readme_texts(root, package_dir)) \
             if other_parts and readme else {}
         skipped = set()
         for index, entry in enumerate(entries):     # another assignment's: left out, in place
@@ -112,8 +113,10 @@ def resolve(package_dir, package, name, teacher, profile, provided, read_launche
             notes.append('no roslaunch or rosrun line to run in %s: the profile\'s default'
                          % (readme or 'a README (there is none)'))
             source = "the profile's default"
-            plan = starts.typed(world + [_put_in(c, package, sim) for c in
-                                         profile['default_commands']], delay)
+            chosen, said = defaults.commands([_put_in(c, package, sim) for c in
+                                              profile['default_commands']], package, package_dir)
+            notes += said
+            plan = starts.typed(world + chosen, delay)
     return {'commands': starts.commands_of(plan), 'starts': plan,
             'build_packages': list(dict.fromkeys(builds)),
             'commands_from': source + (" after the profile's world" if world else ''),
@@ -157,16 +160,17 @@ def read_submission(submission, copy, teacher, profile, provided, hidden, known=
     own = {p.name: p.path for p in found}
     result = resolve(main.path, main.name, submission.name, teacher, profile,
                      provided | set(own), read, root=root, packages=own,
-                     other_parts=lambda entries, text: assignment.other_sections(
-                         text, entries, found, main))
-    listed, built = packages_.choose(found, main, result['commands'],
-                                     result.get('build_packages') or ())
+                     other_parts=lambda entries, texts: assignment.other_sections(
+                         texts, entries, found, main, root))
+    listed, built = packages_.choose(found, main, result['starts'] or result['commands'],
+                                     result.get('build_packages') or (), root=root)
     needs = build_deps.resolve(built, provided | set(own),
                                known if known is not None else build_deps.available_debian())
     release = ros_release.choose(
         profile['releases'], teacher.get('release') or profile['release'],
         ((teacher.get('submissions') or {}).get(submission.name) or {}).get('release'),
-        root, unpacked.notes, fallback_robot=os.path.join(PACKAGE, 'urdf'))
+        root, unpacked.notes, fallback_robot=os.path.join(PACKAGE, 'urdf'),
+        package_dir=main.path)
     result.update(package=main.name, packages=listed, rejected=None, debian=needs['debian'],
                   build=[p.rel for p in built], release=release['release'],
                   release_why=release['why'], releases_next=release['next'],

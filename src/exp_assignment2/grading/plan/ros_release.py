@@ -54,17 +54,36 @@ def _files(root, keep, depth=6):
                 yield os.path.join(dirpath, name)
 
 
-def said(root, notes=()):
+def _own(root, package_dir, keep, depth=6):
+    """The submission's own files that ``keep`` takes: never inside another package
+    than the graded one (a vendored package's README names the release it was
+    written for, not the one the student used)."""
+    package_dir = os.path.normpath(package_dir or root)
+    for path in _files(root, keep, depth):
+        folder = os.path.dirname(path)
+        while os.path.normpath(folder) != os.path.normpath(root) and \
+                os.path.normpath(folder) != package_dir:
+            if os.path.isfile(os.path.join(folder, 'package.xml')):
+                break
+            folder = os.path.dirname(folder)
+        else:
+            yield path
+
+
+def said(root, notes=(), package_dir=None):
     """(release, why) the submission names, or (None, None): a Dockerfile's
     image first, then its READMEs' words (the most named; a tie, the first),
-    then catkin's link into /opt/ros (its note, the link being left out)."""
-    for path in _files(root, lambda n: n == 'Dockerfile' or n.startswith('Dockerfile.')):
+    then catkin's link into /opt/ros (its note, the link being left out). Only the
+    submission's own files say it: none inside another package than the graded
+    one (``package_dir``)."""
+    for path in _own(root, package_dir,
+                     lambda n: n == 'Dockerfile' or n.startswith('Dockerfile.')):
         match = DOCKER_FROM.search(read_text(path))
         if match and match.group(1).lower() in NAMES:
             return match.group(1).lower(), 'its %s says FROM %s' % (
                 os.path.relpath(path, root), match.group(0).split(None, 1)[1].strip())
     counts, first = collections.Counter(), {}
-    for path in _files(root, README.match, depth=3):
+    for path in _own(root, package_dir, README.match, depth=3):
         text = read_text(path)
         for sign, name in SIGNS:
             for match in sign.finditer(text):
@@ -122,14 +141,15 @@ def differs(a, b, found):
                 ra.prefix_frames_with_namespace != rb.prefix_frames_with_namespace)
 
 
-def choose(allowed, first, teacher_choice, root, notes=(), fallback_robot=None):
+def choose(allowed, first, teacher_choice, root, notes=(), fallback_robot=None,
+           package_dir=None):
     """{'release', 'why', 'next'}: the release a submission first runs in
     and why, and the allowed releases (in the course's order) to try next
     when its checks fail there, those whose behaviour differs for it; none
     to try when it was told (grading.yaml, or the submission itself)."""
     if teacher_choice:
         return {'release': teacher_choice, 'why': 'grading.yaml names it', 'next': []}
-    name, why = said(root, notes)
+    name, why = said(root, notes, package_dir)
     if name and name in allowed:
         return {'release': name, 'why': why, 'next': []}
     found = features(root, fallback_robot)

@@ -63,12 +63,42 @@ REDIRECTION = re.compile(r'^(?:\d*|&)(?:>>?|<)(&?\d+|&-)?$')     # 2>&1, >, >>, 
 REDIRECTION_TO = re.compile(r'^(?:\d*|&)(?:>>?|<)&?\S+$')           # >log.txt, 2>/dev/null
 
 
+def _substitutions(text):
+    """(text with each ``$(...)`` outside single quotes as one placeholder, the
+    placeholders' texts): a command substitution is one word to the shell, spaces and
+    all (``$(rospack find pkg)/worlds/a.world``), quoted or not."""
+    out, found, i, quote = [], [], 0, None
+    while i < len(text):
+        c = text[i]
+        if c == "'" and quote != '"':
+            quote = None if quote == "'" else "'"
+        elif c == '"' and quote != "'":
+            quote = None if quote == '"' else '"'
+        elif quote != "'" and text.startswith('$(', i):
+            depth, j = 0, i + 1
+            while j < len(text):
+                depth += {'(': 1, ')': -1}.get(text[j], 0)
+                if depth == 0:
+                    break
+                j += 1
+            found.append(text[i:j + 1])
+            out.append('\x00%d\x00' % (len(found) - 1))
+            i = j + 1
+            continue
+        out.append(c)
+        i += 1
+    return ''.join(out), found
+
+
 def words(text):
     """The words of one command (shlex, as sh), None when its quotes do not
-    close; leading ``VAR=value`` settings and prefixes (``nohup``, ``exec``)
-    and redirections (``> log.txt``, ``2>&1``) dropped."""
+    close; a ``$(...)`` stays whole in its word; leading ``VAR=value``
+    settings and prefixes (``nohup``, ``exec``) and redirections (``>
+    log.txt``, ``2>&1``) dropped."""
+    held, substituted = _substitutions(text)
     try:
-        found = shlex.split(text)
+        found = [re.sub('\x00(\\d+)\x00', lambda m: substituted[int(m.group(1))], w)
+                 for w in shlex.split(held)]
     except ValueError:
         return None
     while found and (re.match(r'^[A-Za-z_]\w*=', found[0]) or found[0] in PREFIXES):

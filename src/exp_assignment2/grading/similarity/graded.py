@@ -52,8 +52,8 @@ class Planner(object):
         resolved = planning.resolve(
             main.path, main.name, name, self.teacher, self.profile, self.provided | set(own),
             lambda requests, packages: {}, root=root, packages=own,
-            other_parts=lambda entries, text: assignment.other_sections(text, entries, found,
-                                                                        main))
-        built = packages_.choose(found, main, resolved['commands'],
-                                 resolved.get('build_packages') or ())[1]
+            other_parts=lambda entries, texts: assignment.other_sections(texts, entries, found,
+                                                                         main, root))
+        built = packages_.choose(found, main, resolved['starts'] or resolved['commands'],
+                                 resolved.get('build_packages') or (), root=root)[1]
         return [p.rel for p in built]
