@@ -2,6 +2,7 @@
 import threading
 import traceback
 
+from . import log, util
 from .machine import Container
 from .states import InvalidStateError, InvalidTransitionError, InvalidUserCodeError, SmachError
 
@@ -84,6 +85,7 @@ class Concurrence(Container):
         threads = {label: threading.Thread(target=self._child_thread, args=(label, errors, ending),
                                            name='concurrence:' + label, daemon=True)
                    for label in self._order}
+        log.info('Concurrence starting with userdata: \n\t%s' % list(self.userdata.keys()))
         self._call_cbs(self._start_cbs, list(self._order))
         for thread in threads.values():
             thread.start()
@@ -93,9 +95,11 @@ class Concurrence(Container):
             for label, outcome in self._child_outcomes.items():
                 if outcome is None:
                     self._states[label].request_preempt()
-        for thread in threads.values():
-            thread.join()
+        for thread in threads.values():     # as SMACH: no longer once shutting down
+            while thread.is_alive() and not util.shutting_down():
+                thread.join(WAIT_STEP)
         outcomes = dict(self._child_outcomes)
+        log.info('Concurrent Outcomes: %s' % outcomes)
         if errors:
             raise errors[0]
         if self.preempt_requested():

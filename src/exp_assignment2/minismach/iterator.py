@@ -1,4 +1,5 @@
 """SMACH's Iterator container (see :mod:`exp_assignment2.minismach`)."""
+from . import log, util
 from .machine import Container
 from .states import InvalidStateError
 
@@ -69,6 +70,9 @@ class Iterator(Container):
         outcome = self._exhausted_outcome
         try:
             for item in items:
+                if util.shutting_down():        # as SMACH: the last outcome stands
+                    break
+                log.info('Iterating %s of %s' % (item, self._items))
                 self.userdata[self._items_label] = item
                 outcome = self._run_child(label)
                 if (self.preempt_requested() or outcome in self._break_outcomes

@@ -2,6 +2,7 @@
 import threading
 import traceback
 
+from . import log, util
 from .states import (InvalidConstructionError, InvalidStateError, InvalidTransitionError,
                      InvalidUserCodeError, Remapper, SmachError, State, UserData)
 
@@ -120,6 +121,7 @@ class StateMachine(Container):
         self._initial_state_label = None
         self._current_label = None
         self._current_state = None
+        self._executor = None       # the thread in execute (set_preempt_handler asks)
         self._lock = threading.RLock()
 
     @staticmethod
@@ -181,24 +183,31 @@ class StateMachine(Container):
                         % (outcome, label, final, list(self._outcomes)))
 
     def execute(self, parent_ud=None):
-        """Run from the initial state until a container outcome is reached."""
+        """Run from the initial state until a container outcome is reached;
+        None when the shutdown check (smach_ros: rospy's) stopped it first."""
         self.check_consistency()
         self._copy_in(parent_ud)
         with self._lock:
             self._current_label = self._initial_state_label
             self._current_state = self._states[self._current_label]
+            self._executor = threading.current_thread()
+        log.info("State machine starting in initial state '%s' with userdata: \n\t%s"
+                 % (self._current_label, list(self.userdata.keys())))
         self._call_cbs(self._start_cbs, [self._current_label])
-        outcome = None
+        outcome = last = None
         try:
-            while outcome is None:
+            while outcome is None and not util.shutting_down():
+                last = self._current_label
                 outcome = self._step()
         finally:
             with self._lock:
                 self._current_label = None
                 self._current_state = None
+                self._executor = None
             self.service_preempt()
         self._copy_out(parent_ud)
-        self._call_cbs(self._termination_cbs, [], outcome)
+        if outcome is not None:     # SMACH's: the last state's label, and the outcome
+            self._call_cbs(self._termination_cbs, [last], outcome)
         return outcome
 
     def _step(self):
@@ -219,8 +228,10 @@ class StateMachine(Container):
                 self._current_state = self._states[final]
                 if self.preempt_requested():
                     self._current_state.request_preempt()
+            log.info("State machine transitioning '%s':'%s'-->'%s'" % (label, outcome, final))
             self._call_cbs(self._transition_cbs, [final])
             return None
+        log.info("State machine terminating '%s':'%s':'%s'" % (label, outcome, final))
         return final
 
 

@@ -24,12 +24,16 @@ import traceback
 import rospy
 
 from .states import State
+from .util import has_smach_interface
 
 WAIT_STEP = 0.1        # wall s between checks for a preempt or shutdown while waiting
 
 
 def _keys(cb, kind):
-    return list(getattr(cb, '_smach_%s_keys' % kind, ())) if cb is not None else []
+    """The ``kind`` ('input', 'output') keys of a callback made with @cb_interface."""
+    if not has_smach_interface(cb):
+        return []
+    return list(getattr(cb, 'get_registered_%s_keys' % kind)())
 
 
 def _cb_outcome(state, what, outcome):
@@ -53,7 +57,8 @@ class _Exchange(State):
                        list(input_keys) + ([key] if key else []) + list(slots) + _keys(cb, 'input'),
                        list(output_keys) + ([reply_key] if reply_key else []) + list(reply_slots)
                        + _keys(reply_cb, 'output'))
-        self.register_outcomes(getattr(reply_cb, '_smach_outcomes', ()))
+        if has_smach_interface(reply_cb):
+            self.register_outcomes(reply_cb.get_registered_outcomes())
         self.register_input_keys(_keys(reply_cb, 'input'))
         self.register_output_keys(_keys(cb, 'output'))
         self._value, self._key, self._slots = value, key, list(slots)

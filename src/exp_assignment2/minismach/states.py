@@ -1,7 +1,16 @@
 """SMACH's states, userdata and errors (see :mod:`exp_assignment2.minismach`)."""
+from . import log
+from .util import has_smach_interface
+
 
 class SmachError(Exception):
-    """Base class of every error raised by this module."""
+    """Base class of every error raised by this module; as SMACH's, it is
+    logged (``logerr``) when it is made, so a node's log says what went wrong
+    even where the error is caught."""
+
+    def __init__(self, message):
+        log.error('%s: %s' % (type(self).__name__, message))
+        Exception.__init__(self, message)
 
 
 class InvalidStateError(SmachError):
@@ -148,16 +157,6 @@ class State(object):
         return self._preempt_requested
 
 
-def cb_interface(outcomes=(), input_keys=(), output_keys=(), io_keys=()):
-    """Decorator declaring the outcomes and keys of a :class:`CBState` callback."""
-    def decorate(cb):
-        cb._smach_outcomes = list(outcomes)
-        cb._smach_input_keys = list(input_keys) + list(io_keys)
-        cb._smach_output_keys = list(output_keys) + list(io_keys)
-        return cb
-    return decorate
-
-
 class CBState(State):
     """A state that calls ``cb(userdata, *cb_args, **cb_kwargs)``."""
 
@@ -167,9 +166,10 @@ class CBState(State):
         self._cb = cb
         self._cb_args = list(cb_args)
         self._cb_kwargs = dict(cb_kwargs or {})
-        self.register_outcomes(getattr(cb, '_smach_outcomes', ()))
-        self.register_input_keys(getattr(cb, '_smach_input_keys', ()))
-        self.register_output_keys(getattr(cb, '_smach_output_keys', ()))
+        if has_smach_interface(cb):     # a callback made with @cb_interface
+            self.register_outcomes(cb.get_registered_outcomes())
+            self.register_input_keys(cb.get_registered_input_keys())
+            self.register_output_keys(cb.get_registered_output_keys())
 
     def execute(self, ud):
         return self._cb(ud, *self._cb_args, **self._cb_kwargs)
