@@ -123,6 +123,19 @@ def test_tracebacks_name_the_students_lines(shell):
     assert 'exp2_' not in proc.stderr
 
 
+def test_a_node_python3_refuses_for_a_late_global_runs_with_python2s_warning(shell):
+    """Written as Python 3 but for a ``global`` after the assignment: Melodic ran it."""
+    env, work = shell
+    (work / 'late.py').write_text(
+        'count = 0\ndef on_message(n):\n    count = n\n    global count\n    return count\n'
+        'print(on_message(4), count)\n')
+    proc = run(['python3', 'late.py'], env, work)
+    assert (proc.returncode, proc.stdout) == (0, '(4, 4)\n'), proc.stderr
+    assert proc.stderr.splitlines() == [
+        "%s:4: SyntaxWarning: name 'count' is assigned to before global declaration"
+        % (work / 'late.py'), '  global count', LINE + 'late.py']
+
+
 def test_a_file_neither_python_reads_fails_on_its_line(shell):
     env, work = shell
     (work / 'bad.py').write_text('import sys\nprint "a"\ndef f(a, a):\n    pass\n')

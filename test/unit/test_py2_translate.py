@@ -4,39 +4,15 @@ src/exp_assignment2/original_env/startup: exp2_py2_read.read (when it translates
 code then does, on which lines), exp2_py2_translate (2to3's fixers and ours, line by
 line), exp2_py2_names (what makes a file Python 3 compiles Python 2 code).
 """
-import contextlib
 import io
-import os
-import sys
 import textwrap
 import traceback
 
 import pytest
 
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(REPO, 'src', 'exp_assignment2', 'original_env', 'startup'))
+from py2_helpers import read, run
 
-import exp2_py2_read  # noqa: E402
-import exp2_py2_translate  # noqa: E402
-
-
-def read(source, path='/students/pkg/scripts/node.py'):
-    data = textwrap.dedent(source).encode() if isinstance(source, str) else source
-    return exp2_py2_read.read(data, path)
-
-
-def run(source, path='/students/pkg/scripts/node.py', stdin=''):
-    """(namespace, what it printed) of ``source`` run as the environment reads it."""
-    reading = read(source, path)
-    assert reading is not None and reading.code is not None
-    namespace, out = {'__name__': '__main__'}, io.StringIO()
-    old_stdin, sys.stdin = sys.stdin, io.StringIO(stdin)
-    try:
-        with contextlib.redirect_stdout(out):
-            exec(reading.code, namespace)
-    finally:
-        sys.stdin = old_stdin
-    return namespace, out.getvalue()
+import exp2_py2_translate  # noqa: E402  (on the path py2_helpers gives)
 
 
 def test_print_statements_as_python2_printed():

@@ -13,8 +13,11 @@ changed), for the import hook (exp2_tab_import.py), the script runner
 3. otherwise (a SyntaxError such as ``print "x"``, or a name only Python 2
    had): it is translated by 2to3's fixers and this environment's
    (exp2_py2_translate.py), after the tab rule if it applied ('python2').
-   The code is compiled from the translation and placed back on the file's
-   lines (exp2_code_columns.relocate), so tracebacks show the student's line
+   What Python 2.7's compiler accepted with a warning and Python 3's
+   refuses (a late ``global``, ``import *`` in a function) is compiled as
+   Python 2 read it (exp2_py2_lenient.py). The code is compiled from the
+   translation and placed back on the file's lines
+   (exp2_code_columns.relocate), so tracebacks show the student's line
    numbers and lines.
 
 A file 2to3 cannot read either gets Python 3's own error. A translation that
@@ -134,6 +137,7 @@ def _decoded(data):
 def _translated(data, path, shifts, in_package, optimize):
     """The 'python2' :class:`Reading` of ``data`` (already re-indented by the tab
     rule where ``shifts`` says), or None when 2to3 cannot parse it."""
+    import exp2_py2_lenient
     import exp2_py2_runtime
     import exp2_py2_translate
     try:
@@ -149,7 +153,7 @@ def _translated(data, path, shifts, in_package, optimize):
     try:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter('always')
-            code = _compile(translation.text, path, optimize)
+            code = exp2_py2_lenient.compile_lenient(translation.text, path, optimize)
     except SyntaxError:
         return Reading(_on_file_lines(translation, new_lines, encoding), None, 'python2')
     for warning in caught:      # said again, on the file's lines

@@ -12,15 +12,18 @@ through one builtin name (``install``) so that no line is added to the file:
 * ``cmp``, ``file``: builtins Python 3 removed (``file(...)`` opens a file,
   ``isinstance(x, file)`` is true for any file object);
 * ``string``: the functions of Python 2's ``string`` module that Python 3
-  dropped (``string.join(words, sep)``, ``string.atoi``, ``string.split``, ...).
+  dropped (``string.join(words, sep)``, ``string.atoi``, ``string.split``, ...);
+* ``import_star``: ``from module import *`` in a function (exp2_py2_lenient.py).
 
 A traceback through these functions (``7 / 0``) shows the student's line
 last, as Python 2's did (exp2_hidden_frames.py).
 """
 import builtins
 import decimal
+import importlib
 import io
 import numbers
+import sys
 import types
 
 NAME = '_exp2_py2'
@@ -124,10 +127,26 @@ string = types.SimpleNamespace(
     join=_join, joinfields=_join, zfill=_zfill)
 
 
+def import_star(module, level):
+    """``from module import *`` (``level`` dots before it) run in a function, as
+    Python 2 ran it: the module's public names (its ``__all__``, else those
+    without a leading underscore) bound when the line runs, in the caller's
+    module globals, where the function finds them."""
+    caller = sys._getframe(1).f_globals
+    if level:
+        package = caller.get('__package__') or caller['__name__'].rpartition('.')[0]
+        found = importlib.import_module('.' * level + module, package)
+    else:
+        found = importlib.import_module(module)
+    names = getattr(found, '__all__', None)
+    if names is None:
+        names = [name for name in vars(found) if not name.startswith('_')]
+    caller.update((name, getattr(found, name)) for name in names)
+
+
 def install():
     """Make this module the builtin ``_exp2_py2``, its frames left out of tracebacks
     (idempotent)."""
-    import sys
     import exp2_hidden_frames
     setattr(builtins, NAME, sys.modules[__name__])
     exp2_hidden_frames.hide(__file__)

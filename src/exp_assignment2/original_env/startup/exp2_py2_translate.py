@@ -3,7 +3,8 @@
 :func:`translate` runs 2to3's fixers (PyPI's ``fissix``, the maintained fork,
 when it is installed, else the standard library's ``lib2to3``, whose
 deprecation warning is silenced) and this environment's (exp2_py2_fixers.py)
-on a file's text, in memory. Left out of 2to3's default set: ``fix_import``
+on a file's text, in memory, and exp2_py2_lenient's renaming of
+``async``/``await`` names. Left out of 2to3's default set: ``fix_import``
 (``import helper`` -> ``from . import helper``) except for a module of a
 package, where Python 2's implicit relative import did that, and
 ``fix_numliterals`` (replaced).
@@ -32,6 +33,7 @@ with warnings.catch_warnings():
         from lib2to3.pgen2 import parse as _parse, token as _token, tokenize as _tokenize
 
 import exp2_py2_fixers
+import exp2_py2_lenient
 
 BACKEND = lib.__name__
 LEFT_OUT = ('fix_import', 'fix_numliterals')
@@ -59,7 +61,7 @@ class _Tool(refactor.RefactoringTool):
 
     def get_fixers(self):
         pre, post = super().get_fixers()
-        for cls in exp2_py2_fixers.make(lib):
+        for cls in exp2_py2_fixers.make(lib) + exp2_py2_lenient.make(lib):
             fixer = cls(self.options, self.fixer_log)
             (pre if fixer.order == 'pre' else post).append(fixer)
         pre.sort(key=lambda f: f.run_order)
