@@ -58,21 +58,14 @@ def test_the_default_loggers_print_as_smachs(capsys):
 
 
 def test_an_error_is_logged_when_it_is_made(heard):
-    class Broken(smach.State):
-        def __init__(self):
-            smach.State.__init__(self, outcomes=['a'])
-
-        def execute(self, ud):
-            raise ValueError('broken sensor')
-
     sm = smach.StateMachine(outcomes=['a'])
     with sm:
-        smach.StateMachine.add('BROKEN', Broken())
+        smach.StateMachine.add('BROKEN', smach.CBState(lambda ud: {}['sensor'], outcomes=['a']))
     with pytest.raises(smach.InvalidUserCodeError):
         sm.execute()
     assert len(heard['error']) == 1
     assert heard['error'][0].startswith("InvalidUserCodeError: Could not execute state 'BROKEN'")
-    assert 'broken sensor' in heard['error'][0]
+    assert "KeyError: 'sensor'" in heard['error'][0]
 
 
 class Stepper(smach.State):
