@@ -66,16 +66,12 @@ def compile_lenient(text, path, optimize=-1):
     except SyntaxError as refused:
         if not REFUSALS.search(str(refused.msg)):
             raise
-        error = refused
     tree = ast.parse(text, path)
     said = []
     _Block(tree, said).settle()
     for message, line in sorted(said, key=lambda item: item[1]):
         warnings.warn_explicit(message, SyntaxWarning, path, line)
-    try:
-        return compile(tree, path, 'exec', dont_inherit=True, optimize=optimize)
-    except SyntaxError:
-        raise error from None       # Python 3's first word on it, where it is
+    return compile(tree, path, 'exec', dont_inherit=True, optimize=optimize)
 
 
 class _Block(object):
