@@ -23,3 +23,9 @@ def report_active_state(sm, callback):
             callback(active_states[0])
     sm.register_start_cb(on_change)
     sm.register_transition_cb(on_change)
+
+
+def log_to(info, warn, debug, error):
+    """Route SMACH's own log lines (each container's start, transitions, end) to these
+    functions, as smach_ros does for rospy: without it SMACH prints them on stdout."""
+    smach.set_loggers(info, warn, debug, error)

@@ -17,7 +17,7 @@ from exp_assignment2.ros.dog import RosDogBody, RosDogEyes
 from exp_assignment2.ros.ending import run_until_shutdown
 from exp_assignment2.ros.log import RosLog
 from exp_assignment2.ros.robot_model import robot_name, turn_sign
-from exp_assignment2.smach_api import report_active_state
+from exp_assignment2.smach_api import log_to, report_active_state
 
 
 def main():
@@ -45,5 +45,7 @@ def main():
         rospy.set_param('/state', label)
         state_pub.publish(String(label))
     sm = build_state_machine(dog)
+    # the state is reported on its topic: SMACH's own lines only at debug level
+    log_to(rospy.logdebug, rospy.logwarn, rospy.logdebug, rospy.logerr)
     report_active_state(sm, report)
     run_until_shutdown(sm.execute)

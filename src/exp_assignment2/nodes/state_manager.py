@@ -17,7 +17,7 @@ from exp_assignment2.ros.clock import RosClock
 from exp_assignment2.ros.ending import run_until_shutdown
 from exp_assignment2.ros.log import RosLog, refusal_log
 from exp_assignment2.ros.miro import RosMiroBody, listen
-from exp_assignment2.smach_api import report_active_state
+from exp_assignment2.smach_api import log_to, report_active_state
 
 
 def person_model_mover():
@@ -61,5 +61,7 @@ def main():
         rospy.set_param('/state', STATE_PARAM[label])
         state_pub.publish(String(STATE_PARAM[label]))
     sm = build_state_machine(miro)
+    # the state is reported on its topic: SMACH's own lines only at debug level
+    log_to(rospy.logdebug, rospy.logwarn, rospy.logdebug, rospy.logerr)
     report_active_state(sm, report)
     run_until_shutdown(sm.execute)
