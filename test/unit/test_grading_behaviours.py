@@ -98,7 +98,11 @@ def test_a_robot_spawned_beside_the_ball_reaches_it_once_it_drives_to_it():
     beside = trace(line(0, 0.8, 5, 10), lambda t: (2.6, 0.0, 0.5), until=20)
     got = figure(beside, 'approaches')
     assert got[0] == 1 and got[2] == pytest.approx(6.9, abs=0.2)   # 0.3 m driven by then
-    assert figure(trace(still(), lambda t: (2.6, 0.0, 0.5)), 'approaches')[0] == 0
+    # one that never drove at it had nothing to reach: the ball was never out of reach
+    with pytest.raises(metrics.NotJudged, match='nothing to reach'):
+        figure(trace(still(), lambda t: (2.6, 0.0, 0.5)), 'approaches')
+    assert figure(trace(still(), lambda t: (2.6 if t < 30 else 5.0, 0.0, 0.5), until=40),
+                  'approaches')[0] == 0       # rolled out of reach, and it did not follow
     # spawned 2.2 m from it, it drove off to 4.8 m, then came back: that return is its reach
     away_and_back = lambda t: (line(0, -2.6, 4, 10)(t) if t < 10 else  # noqa: E731
                                line(-2.6, 0.5, 12, 16)(t))
@@ -130,16 +134,28 @@ def test_a_sleep_at_home():
     assert got[0] == pytest.approx(18.2, abs=0.5) and 'rested' in got[1]
     assert got[2] == pytest.approx(16.8, abs=0.5)         # when it had rested min (8) s
     assert figure(run, 'sleeps')[0] == pytest.approx(16, abs=1)     # a home of its own
-    assert figure(run, 'sleeps', home=[6, 6], occasion=30)[0] == 0.0    # not the profile's home
+    assert figure(run, 'sleeps', home=[6, 6], occasion=30, unseen=0)[0] == 0.0  # not at home
     # turning on the spot 15 s to search for the ball is not resting at a home of its own
     searching = lambda t: robot(t) if not 10 <= t < 25 else (-6.0, -6.0, 0.5 * (t - 10))  # noqa
     assert figure(trace(searching, lambda t: (5, 5, 0.5), until=40), 'sleeps',
-                  occasion=30)[0] == 0.0
+                  occasion=30, unseen=0)[0] == 0.0
     assert figure(trace(searching, lambda t: (5, 5, 0.5), until=40), 'sleeps',
                   home=[-6, -6])[0] == pytest.approx(18.2, abs=0.5)    # but it is at home
     # at home from the start, never left: it did not go there
     assert figure(trace(still(-6, -6), lambda t: (5, 5, 0.5), until=240), 'sleeps',
                   home=[-6, -6])[0] == 0.0
+
+
+def test_a_dog_that_always_saw_the_ball_had_no_occasion_to_sleep():
+    """A dog plays while it sees the ball: one that had the ball in view all the run (a
+    ball nobody moved, in front of it) never had a stretch of NORMAL to sleep in; one
+    that had a minute without it did, and is failed for resting nowhere."""
+    in_view = trace(arrives(1.2, 10), lambda t: (4.0, 0.0, 0.5), until=240)
+    with pytest.raises(metrics.NotJudged, match="robot's sight 0 s at the longest"):
+        figure(in_view, 'sleeps')
+    gone = trace(arrives(1.2, 10), lambda t: (4.0, 0.0, 0.5 if t < 100 or t > 170 else HIDDEN),
+                 until=240)
+    assert figure(gone, 'sleeps')[0] == 0.0
 
 
 def test_a_sleep_may_come_later_than_a_short_run():
@@ -149,7 +165,7 @@ def test_a_sleep_may_come_later_than_a_short_run():
     checks = {c['metric']: c for c in metrics.evaluate(driving, DOG, ROLES)}
     assert checks['sleeps']['passed'] is None and checks['sleeps']['judged'] is False
     circling = lambda t: (4 * math.cos(0.1 * t), 4 * math.sin(0.1 * t), 0.1 * t)  # noqa: E731
-    long_run = trace(circling, lambda t: (9, 9, 0.5), until=240)
+    long_run = trace(circling, lambda t: (9, 9, HIDDEN), until=240)
     assert figure(long_run, 'sleeps')[0] == 0.0          # the profile's 240 s, never: failed
 
 

@@ -15,9 +15,9 @@ left and right? So the occasion is the **dog's** stop, never the ball's:
   :data:`STILL` m or more away since its last rest), awake (not in a sleep),
   and at that moment the ball is there (on the ground, in the arena), within
   ``reach`` but not on it (more than :data:`ON` m), in the camera's view, and
-  the robot's own driving had been closing on it (:data:`APPROACH` m over the
-  :data:`BEFORE` s before): a ball it was approaching, not one it stopped beside
-  on the way elsewhere, nor one behind it;
+  the robot's own driving had been setting its distance to it (closing on it, or
+  backing off to where its follower keeps it: :data:`APPROACH` m either way over
+  the :data:`BEFORE` s before): a ball it was playing with, not one behind it;
 * after an arrival, the head is judged over the following ``window`` s (the
   reference's slowest sweep with a margin, at least 30 s: the calibration),
   whatever the ball does meanwhile (a ball node that moves the ball on as the
@@ -37,7 +37,7 @@ SETTLED = 0.1        # m: a robot that stayed this close to one place ...
 SETTLE = 1.5         # ... for these s has come to rest there
 STILL = 0.3          # m: and rests while it stays this close to it
 ON = 1.0             # m: a ball closer than this is on the robot: it sees nothing of it
-APPROACH = 0.2       # m its own driving closed on the ball ...
+APPROACH = 0.2       # m its own driving changed its distance to the ball ...
 BEFORE = 10.0        # ... over these s before it came to rest
 WINDOW = 30.0        # s after an arrival the head is judged over, at the least
 
@@ -111,7 +111,7 @@ def arrivals(track, reach, sight, asleep=frozenset(), settle=SETTLE):
                'the ball was %.1f m away' % d if d > reach else
                'the ball was on it' if d <= ON else
                'the ball was out of its camera\'s view' if not sight.sees(s) else
-               'it was not coming to the ball' if _closing(track, since, i0) < APPROACH
+               'it was not coming to the ball' if abs(_closing(track, since, i0)) < APPROACH
                else None)
         out.append((i0, why, i1))
     return out

@@ -92,6 +92,12 @@ def sleeps(trace, roles, check):
             raise NotJudged('no rest at %s in %.0f s, and a sleep may come later (it comes at '
                             'random: %g s is a run long enough for it)' % (
                                 where, trace.duration, check['occasion']))
+        unseen = _unseen(trace, roles, check)
+        if unseen is not None and unseen < float(check.get('unseen', 0.0)):
+            raise NotJudged('no rest at %s; the ball was out of the robot\'s sight %.0f s at '
+                            'the longest (it plays while it sees the ball: %g s at a time out of '
+                            'its sight give it the occasion to sleep)' % (
+                                where, unseen, check['unseen']))
         radius = float(check.get('radius', check.get('home_radius', 1.0)))
         return 0.0, 'never came to %s and stayed within %.1f m of it %g s' % (
             where, radius if home else min(radius, STILL), least / 2.0), None
@@ -104,6 +110,18 @@ def sleeps(trace, roles, check):
     return round(rested, 1), 'rested %.1f s at %s (%.1f, %.1f) from t = %.1f s' % (
         rested, 'home' if home else 'its own home', x, y, track[a].t), \
         track[a].t + min(rested, least)
+
+
+def _unseen(trace, roles, check):
+    """The longest time (s) the ball was out of the robot's sight at a stretch (gone, or
+    out of its camera's view), or None when the ball or the camera cannot be told."""
+    if roles.ball.name is None or roles.robot.name is None:
+        return None
+    track = bt.samples(trace, roles.robot.name, roles.ball.name, roles.head.name,
+                       check.get('arena'))
+    sight = bt.Sight(trace, roles, check)
+    return max([track[b].t - track[a].t for a, b in bt.spans(
+        track, lambda i: not sight.sees(track[i]))] or [0.0])
 
 
 def wanders(trace, roles, check):

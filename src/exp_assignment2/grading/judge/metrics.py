@@ -42,20 +42,28 @@ def _said(track, found, check):
                     if hidden else ''])
 
 
-def _first_there(track, roles):
+def _first_there(track, found, roles, check):
     """The first sample the ball was there (on the ground, in the arena), or
-    :class:`NotJudged`: the run gave the robot no ball to reach."""
+    :class:`NotJudged`: the run gave the robot no ball to reach (none there; or one
+    never out of reach, the robot spawned beside a ball that stayed, and it did not
+    drive at it: there was nothing to reach)."""
     first = next((s for s in track if s.there), None)
     if first is None:
         raise NotJudged('%s was never on the ground in the arena beside %s: no ball to reach'
                         % (roles.ball.name, roles.robot.name))
+    reach = reach_.settings(check)[0]
+    if not any(s.robots for s in found) and \
+            not any(s.there and ball_track.distance(s) > reach for s in track):
+        raise NotJudged('%s was never farther than %g m from %s while on the ground: nothing '
+                        'to reach (it started beside a ball that stayed)' % (
+                            roles.ball.name, reach, roles.robot.name))
     return first
 
 
 def approaches(trace, roles, check):
     """Times the robot reached a ball that was there, by its own motion (:mod:`.reach`)."""
     track, found = _stays(trace, roles, check)
-    _first_there(track, roles)
+    _first_there(track, found, roles, check)
     near = [ball_track.distance(s) for s in track if s.there]
     mine = [s for s in found if s.robots]
     return len(mine), 'closest %.2f m; within %.2f m %d times%s' % (
@@ -68,7 +76,7 @@ def first_approach_time(trace, roles, check):
     """s from the ball's first time on the ground in the arena (the robot's first
     occasion to reach it) to the robot's first reach."""
     track, found = _stays(trace, roles, check)
-    first = _first_there(track, roles)
+    first = _first_there(track, found, roles, check)
     start = first.t if first.t > track[0].t + 1.0 else 0.0     # there from the start: t = 0
     mine = [s for s in found if s.robots]
     if not mine:
