@@ -132,3 +132,30 @@ def test_a_course_repository_s_top_readme_runs_no_other_exercise(tmp_path):
             False, why),
         'rosrun exercise1 controller.py': (False, why),
         'roslaunch exp_assignment2 gazebo_world.launch': (True, '')}
+
+
+def test_a_readme_that_starts_nothing_runs_the_package_s_one_start_script(tmp_path):
+    """The README's script only builds (catkin_make, chmod), though the README says it
+    starts every terminal; the package's other script opens them: a person looking
+    for how to start it runs that one, and Stage's line is the world's to replace."""
+    files = {'Ass1.sh': 'cd ../..\ncatkin_make\nchmod +x scripts/*.py\n',
+             'l.sh': 'gnome-terminal -x sh -c "roscore; bash"\n'
+                     'gnome-terminal -x sh -c "rosrun stage_ros stageros world/a.world; bash"\n'
+                     'gnome-terminal -x sh -c "rosrun my_pkg state_manager.py; bash"\n'
+                     'roslaunch --wait my_pkg launch_all.launch\n',
+             'scripts/state_manager.py': '', 'launch/launch_all.launch': '<launch/>'}
+    root = package(tmp_path, '```sh\nchmod +x Ass1.sh\n./Ass1.sh\n```\nThis starts every '
+                             'terminal.\n', files)
+    miro = {'world_commands': ['roslaunch {sim} miro_world.launch'],
+            'default_commands': ['rosrun {package} state_manager.py']}
+    got = resolve(root, 'my_pkg', 'a', {}, miro, {'stage_ros'},
+                  reader({'launch_all.launch': ['/grounding']}))
+    assert got['commands'] == ['roslaunch exp_assignment2 miro_world.launch',
+                               'rosrun my_pkg state_manager.py',
+                               'roslaunch --wait my_pkg launch_all.launch']
+    assert any("the package's one start script, l.sh, run as a person looking for how to "
+               "start it does" in note for note in got['notes'])
+    # two scripts that start nodes: which one a person would run cannot be told
+    (tmp_path / 'my_pkg' / 'other.sh').write_text('rosrun my_pkg state_manager.py\n')
+    got = resolve(root, 'my_pkg', 'a', {}, miro, {'stage_ros'}, reader({}))
+    assert got['commands_from'] == "the profile's default after the profile's world"

@@ -241,6 +241,8 @@ def choose(entries, ctx, read_launches):
             item['cwd'] = entry['cwd']
         listed.append(item)
         item['why'] = _left_out(entry) or ''
+        if entry.get('found'):          # the README started nothing: a script found
+            item['why'] = entry['found'] + ': its roslaunch/rosrun lines are read'
         if item['why']:
             continue
         parts = ros_parts(shell_words(entry['command']))

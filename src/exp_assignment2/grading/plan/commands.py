@@ -318,7 +318,32 @@ def readme_entries(root, package_dir=None, packages=None):
                 if script:
                     _add_script(entries, index, add, start_script.read(
                         read_text(os.path.join(root, script)), runs_in, cd))
+    if not any(e['kind'] == 'ros' for e in entries):
+        _add_found_script(root, package_dir, entries, add, cd)
     return entries, ' and '.join(names) or None
+
+
+def _add_found_script(root, package_dir, entries, add, cd):
+    """A README that starts nothing (no README, or one whose lines only build): a
+    person looks in the package for what starts it, and runs its one start script (a
+    ``.sh`` whose lines start ROS nodes), from its folder, as the README's own."""
+    found = []
+    for paths in own_names.files(package_dir).values():
+        for path in paths:
+            if path.endswith('.sh'):
+                folder = _folder(root, os.path.dirname(path))
+                starts = start_script.read(read_text(path), folder, cd)
+                if any(kind_of(_clean(s['command'])) == 'ros' for s in starts):
+                    found.append((path, folder, starts))
+    if len(found) != 1:
+        return
+    path, folder, starts = found[0]
+    rel = os.path.relpath(path, root)
+    index = add('bash %s' % os.path.basename(path), 'the package', folder, script=rel,
+                found='the README starts nothing: the package\'s one start script, %s, '
+                      'run as a person looking for how to start it does' % rel)
+    if index is not None:
+        _add_script(entries, index, add, starts)
 
 
 def _add_script(entries, index, add, starts):
