@@ -92,6 +92,12 @@ def test_a_ball_driven_into_a_parked_robot_is_not_its_reach():
     # the robot driving to a ball that also rolls at it: its own share of the closing counts
     both = trace(line(0, 4, 0, 10), line(9, 7, 0, 10), until=20)
     assert figure(both, 'approaches')[0] == 1
+    # spawned 2.24 m from a ball that rolled 0.5 m at it while it drove 0.45 m at the
+    # ball: they met halfway, its reach; a ball rolled into it while it crept 0.3 m: not
+    halfway = trace(line(0, 0.45, 1, 5), line(2.24, 1.74, 1, 5), until=20)
+    assert figure(halfway, 'approaches')[0] == 1
+    crept = trace(line(0, 0.3, 1, 5), line(8, 1.5, 1, 5), until=20)
+    assert figure(crept, 'approaches')[0] == 0
 
 
 def test_a_robot_spawned_beside_the_ball_reaches_it_once_it_drives_to_it():

@@ -6,18 +6,20 @@ A **stay** near the ball begins when the distance (centres, in the plane)
 falls within ``reach`` and ends when it passes 1.25 x ``reach``, or when the
 ball is gone (hidden under the floor: the robot standing over the place where
 it went under is not near it). A stay is the robot's **reach** when the
-robot's own driving made most of the approach: from where the approach began
+robot's own driving made a real part of the approach: from where the approach began
 (the last moment the ball was 2 x ``reach`` away since the last stay, else the
 farthest it was since then, or since the ball's appearance or the run's
 start) to the moment it came within ``reach`` (for a stay it was in from the
 start: to its closest), the distance the robot's own moves closed (each
-step's change with the ball held where it was) is at least ``own`` (default
-0.5) of the distance closed and at least ``closing`` m (default 0.3). A ball
+step's change with the ball held where it was) is at least ``own`` (default a
+third) of the distance closed and at least ``closing`` m (default 0.3): a robot
+and a ball that met halfway is the robot's reach, as a teacher sees it. A ball
 rolled into a robot that stood still is a stay, not a reach; a robot spawned
 beside the ball reaches it only once it drives to it. The reach's moment is
 when it came within ``reach``, or, for a stay it was in from the start, when
-its own driving had closed ``closing`` m. The head's check judges the same
-stays, with the same ``reach``.
+its own driving had closed ``closing`` m. The head's check judges the robot's
+arrivals at the ball (:mod:`~exp_assignment2.grading.judge.arrivals`), with the
+same ``reach``.
 """
 import math
 from collections import namedtuple
@@ -26,7 +28,7 @@ from exp_assignment2.grading.judge import ball_track
 
 OUT = 1.25          # x reach: out again
 FAR = 2.0           # x reach: an approach is judged from the last moment the ball was this far
-OWN, CLOSING = 0.5, 0.3
+OWN, CLOSING = 1 / 3.0, 0.3
 
 Stay = namedtuple('Stay', 't_in t_out closest own closed at robots i_in i_out')
 Stay.__doc__ = """A stay near the ball: in and out (s), the closest (m), the m the
