@@ -243,24 +243,47 @@ def test_a_sweep_split_by_the_ball_moving_on_counts():
 
 def test_a_long_sweep_against_short_pauses_of_the_ball_counts_at_every_arrival():
     """Every 40 s the ball stops at a place 6 m on, rests 20 s, and rolls on; the dog
-    comes to rest 2.8 m short of it 2 s after it stopped and sweeps its head for 26 s
+    comes to rest 2.8 m short of it 4 s after it stopped and sweeps its head for 26 s
     (13 s each way), outlasting the ball's pause, then follows: 3 of 3."""
     def ball(t):
         k, since = divmod(t, 40.0)
         return (-5.0 + 6.0 * (k + max(0.0, since - 20.0) / 20.0), 0.0, 0.5)
 
     def robot(t):
-        k, since = divmod(t - 2.0, 40.0)
-        if t < 2.0:
-            return line(-9.5, -7.8, 0.0, 2.0)(t)
-        x = -7.8 + 6.0 * k + 6.0 * min(1.0, max(0.0, (since - 26.5) / 11.5))
+        k, since = divmod(t - 4.0, 40.0)
+        if t < 4.0:
+            return line(-9.5, -7.8, 2.0, 4.0)(t)
+        x = -7.8 + 6.0 * k + 6.0 * min(1.0, max(0.0, (since - 24.5) / 15.5))
         return (x, 0.0, 0.0)
 
     def head(t):
-        since = (t - 2.5) % 40.0
+        since = (t - 4.5) % 40.0
         return 0.6 if 0 <= since < 13 else -0.6 if since < 26 else 0.0
     got = figure(trace(robot, ball, until=120, head=head), 'looks_both_ways')
     assert got[0] == 1.0 and 'after 3 of the 3 times' in got[1], got
+
+
+def test_a_ball_hidden_as_the_dog_arrives_is_no_occasion():
+    """The ball goes under the floor 1 s after the dog came to rest at it: the dog is
+    to give it up, not to look around for it."""
+    hidden = trace(arrives(1.2, 10), lambda t: (4.0, 0.0, 0.5 if t < 11 else HIDDEN),
+                   head=lambda t: 0.0)
+    with pytest.raises(metrics.NotJudged, match='the ball was gone as it came'):
+        figure(hidden, 'looks_both_ways')
+
+
+def test_a_pause_while_the_ball_rolls_past_is_no_arrival():
+    """The dog pauses 2.8 m from a ball that is still rolling past it: it did not come
+    to a ball at rest, so nothing asked it to look around."""
+    rolling = trace(arrives(1.2, 10), lambda t: (4.0, -6.0 + 0.5 * t, 0.5), until=40,
+                    head=lambda t: 0.0)
+    with pytest.raises(metrics.NotJudged, match='the ball was rolling while it rested'):
+        figure(rolling, 'looks_both_ways')
+    # a ball that rolls to a stop beside the resting dog: arrived at when it stops
+    to_a_stop = trace(arrives(1.2, 10), lambda t: (4.0, min(0.0, -6.0 + 0.5 * t), 0.5),
+                      until=60, head=sweep(14, 3))
+    got = figure(to_a_stop, 'looks_both_ways')
+    assert got[0] == 1.0 and got[2] == pytest.approx(17.0, abs=0.2)
 
 
 def test_a_stop_of_the_ball_behind_the_dog_is_no_occasion():
@@ -295,6 +318,20 @@ def test_wandering_while_the_ball_is_out_of_sight():
     in_view = trace(line(0, 8, 0, 40), lambda t: (9, 0, 0.5), until=40)
     with pytest.raises(metrics.NotJudged, match='occasion to wander'):
         figure(in_view, 'wanders')
+
+
+def test_a_short_time_out_of_sight_asks_for_fewer_places():
+    """The ball behind the robot for 65 s: one place each 30 s is asked (2, not the
+    profile's 6); it drove to 4, and passes; a whole run out of sight asks for 6."""
+    short = trace(line(0, 8, 0, 40), lambda t: (-8, 0, 0.5) if t < 65 else (9, 0, 0.5),
+                  until=100)
+    got = metrics.evaluate(short, dict(DOG, checks=[check('wanders')]), ROLES)[0]
+    assert (got['value'], got['passed'], got['threshold']) == (4, True, '>= 2')
+    assert got['limits'] == {'min': 2} and 'time for 2 at one each 30 s' in got['detail']
+    long = trace(line(0, 8, 0, 40), lambda t: (-8, 0, 0.5), until=240)
+    got = metrics.evaluate(long, dict(DOG, checks=[check('wanders')]), ROLES)[0]
+    assert (got['value'], got['passed'], got['threshold']) == (4, False, '>= 6')
+    assert 'limits' not in got
 
 
 def test_each_check_says_when_it_was_decided():

@@ -14,7 +14,11 @@ left and right? So the occasion is the **dog's** stop, never the ball's:
 * a rest is an **arrival at the ball** when the robot came there (it was
   :data:`STILL` m or more away since its last rest), awake (not in a sleep),
   and at that moment the ball is there (on the ground, in the arena), within
-  ``reach`` but not on it (more than :data:`ON` m), in the camera's view, and
+  ``reach`` but not on it (more than :data:`ON` m), in the camera's view, at
+  rest (not rolling past a dog that paused: a ball that rolls to a stop beside
+  the resting dog is arrived at when it stops), still there
+  :data:`STAYED` s later (a ball hidden as the dog arrives is to be given up, not
+  looked around for), and
   the robot's own driving had been setting its distance to it (closing on it, or
   backing off to where its follower keeps it: :data:`APPROACH` m either way over
   the :data:`BEFORE` s before): a ball it was playing with, not one behind it;
@@ -40,6 +44,10 @@ ON = 1.0             # m: a ball closer than this is on the robot: it sees nothi
 APPROACH = 0.2       # m its own driving changed its distance to the ball ...
 BEFORE = 10.0        # ... over these s before it came to rest
 WINDOW = 30.0        # s after an arrival the head is judged over, at the least
+ROLLING = 2.5        # s before an arrival the ball is at rest (up to LAG s before it: the
+LAG = 1.0            # averaged rest begins late, a speed is over a second): it had stopped
+STAYED = 3.0         # s the ball stays on the ground after an arrival: one gone sooner is to
+                     # be given up, not looked around for
 
 Look = namedtuple('Look', 't distance left right done cut')
 Look.__doc__ = """One occasion: the arrival's time (s) and distance to the ball (m),
@@ -80,7 +88,7 @@ def _closing(track, a, b):
     return own
 
 
-def _settled_distance(track, i0, i1, settle=SETTLE):
+def settled_distance(track, i0, i1, settle=SETTLE):
     """m from where the robot settled (``settle`` s into its rest: the averaged position
     leads the stop a little) to the ball where it was as the rest began (None: not there)."""
     s = track[i0]
@@ -90,10 +98,22 @@ def _settled_distance(track, i0, i1, settle=SETTLE):
     return math.hypot(s.bx - track[k].rx, s.by - track[k].ry)
 
 
+def _rolling(track, speeds, i0):
+    """Was the ball moving as the robot came to rest (it paused while the ball rolled
+    on: it did not come to a ball at rest)? Its speed in the seconds before the rest,
+    up to :data:`LAG` s before it: a ball node that moves the ball on the moment the
+    dog stops does not make the dog's arrival a pause."""
+    t0 = track[i0].t
+    return any(speeds[k] is not None and speeds[k] >= bt.MOVING
+               for k in range(i0, -1, -1) if LAG <= t0 - track[k].t <= ROLLING)
+
+
 def arrivals(track, reach, sight, asleep=frozenset(), settle=SETTLE):
-    """[(i0, why, i1)] of the robot's rests (its first and last samples): ``why`` None
+    """[(at, why, i1)] of the robot's rests (the arrival's sample: the rest's first, or
+    the first after a ball rolling beside it came to rest; the rest's last): ``why`` None
     for an arrival at the ball (see the module), else the reason it is not one."""
     rests, pts = robot_rests(track, settle)
+    speeds = bt.ball_speeds(track)
     out, previous = [], None        # the last rest's (first, last) samples
     for i0, i1 in rests:
         here = pts[i0][1:]
@@ -103,17 +123,23 @@ def arrivals(track, reach, sight, asleep=frozenset(), settle=SETTLE):
                     pts[previous[1] + 1:i0]))
         since = next((k for k in range(i0, -1, -1) if track[i0].t - track[k].t >= BEFORE), 0)
         previous = (i0, i1)
-        s = track[i0]
-        d = _settled_distance(track, i0, i1, settle)
+        # the arrival: the rest's start, or when a ball rolling to a stop beside it stopped
+        at = next((k for k in range(i0, i1 + 1) if track[k].there and
+                   not _rolling(track, speeds, k)), i0)
+        s = track[at]
+        d = settled_distance(track, at, i1, settle)
         why = ('it did not come there' if not came else
-               'asleep' if i0 in asleep else
+               'asleep' if at in asleep else
                'the ball was not there' if not s.there else
+               'the ball was rolling while it rested' if _rolling(track, speeds, at) else
+               'the ball was gone as it came' if not all(
+                   x.there for x in track[at:] if x.t - s.t <= STAYED) else
                'the ball was %.1f m away' % d if d > reach else
                'the ball was on it' if d <= ON else
                'the ball was out of its camera\'s view' if not sight.sees(s) else
                'it was not coming to the ball' if abs(_closing(track, since, i0)) < APPROACH
                else None)
-        out.append((i0, why, i1))
+        out.append((at, why, i1))
     return out
 
 
@@ -131,7 +157,7 @@ def looks(track, found, angle, window=WINDOW):
         left = next((s.t for s in during if s.head is not None and s.head >= angle), None)
         right = next((s.t for s in during if s.head is not None and s.head <= -angle), None)
         done = max(left, right) if left is not None and right is not None else until
-        out.append(Look(t0, round(_settled_distance(track, i, i1), 2), left, right, done,
+        out.append(Look(t0, round(settled_distance(track, i, i1), 2), left, right, done,
                         done > end))
         free_from = done
     return out

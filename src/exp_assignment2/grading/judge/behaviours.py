@@ -124,15 +124,16 @@ def _unseen(trace, roles, check):
         track, lambda i: not sight.sees(track[i]))] or [0.0])
 
 
-def wanders(trace, roles, check):
-    """Distinct places (``spacing`` m apart) it drove to while the ball was out of its sight."""
+def wandered(trace, roles, check):
+    """([s it reached each new place], s the ball was out of its sight in spells of
+    ``gap`` s or more, the first such spell's start or None): places ``spacing`` m
+    apart it drove to while the ball was out of its sight."""
     track = _track(trace, roles, check)
     sight, reach = bt.Sight(trace, roles, check), _reach(check)
     spacing, least = float(check.get('spacing', 2.0)), float(check.get('gap', 5.0))
     seen = [sight.sees(s) or (s.there and bt.distance(s) <= reach) for s in track]
     out = [(a, b) for a, b in bt.spans(track, lambda i: not seen[i])
            if track[b].t - track[a].t >= least]
-    total = sum(track[b].t - track[a].t for a, b in out)
     pts = bt.smoothed([(s.t, s.rx, s.ry) for s in track])
     places, times = [pts[0][1:]], []
     for a, b in out:
@@ -140,15 +141,28 @@ def wanders(trace, roles, check):
             if all(math.hypot(x - p[0], y - p[1]) >= spacing for p in places):
                 places.append((x, y))
                 times.append(t)
+    return times, sum(track[b].t - track[a].t for a, b in out), \
+        track[out[0][0]].t if out else None
+
+
+def wanders(trace, roles, check):
+    """Distinct places (``spacing`` m apart) it drove to while the ball was out of its sight."""
+    times, total, first = wandered(trace, roles, check)
+    spacing, least = float(check.get('spacing', 2.0)), float(check.get('gap', 5.0))
     want = int(check.get('min', 1))
     if total < float(check.get('occasion', 0.0)) and len(times) < want:
         raise NotJudged('the ball was out of the robot\'s sight %.0f s in all (spells of %g s '
                         'or more), less than the %g s that give it the occasion to wander'
                         % (total, least, check['occasion']))
+    # the places a run's time out of sight asks for: one each ``per`` s, up to ``min``
+    per, limits = check.get('per'), {}
+    if per and total < want * float(per):
+        want = max(1, int(total // float(per)))
+        limits = {'min': want}
     return len(times), '%d places %g m apart driven to while the ball was out of its sight ' \
-        '(%.0f s in all)' % (len(times), spacing, total), \
-        (times[want - 1] if len(times) >= want else times[-1] if times else
-         (track[out[0][0]].t if out else None))
+        '(%.0f s in all%s)' % (len(times), spacing, total, ', time for %d at one each %g s' % (
+            want, float(per)) if limits else ''), \
+        (times[want - 1] if len(times) >= want else times[-1] if times else first), limits
 
 
 def follows_ball(trace, roles, check):

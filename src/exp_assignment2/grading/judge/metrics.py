@@ -8,7 +8,9 @@ named them (:mod:`exp_assignment2.grading.judge.roles`); a profile's check names
 a metric in ``metric`` and gives its thresholds (``min``/``max``) and its own
 settings (``reach``, ``topic``, ...; those the profile shares, such as
 ``reach``, where it gives none); ``at`` is the simulated s the figure was
-decided at (the page shows the camera then). ``value`` None means the figure
+decided at (the page shows the camera then); a fourth, ``limits``, a threshold
+the run's occasion scales (``{'min': 3}``: three places for the minute the ball was
+out of sight), used for this run in place of the profile's. ``value`` None means the figure
 could not be had (the check then fails, saying why in ``detail``). A check
 whose robot, head or ball cannot be told, or whose behaviour the run gave no
 occasion for, is not run at all (:class:`NotJudged`): its result says why,
@@ -200,20 +202,22 @@ def evaluate(trace, profile, roles=None):
     roles = roles if roles is not None else roles_.find(trace, profile)
     results = []
     for check in profile['checks']:
-        judged, at = True, None
+        judged, at, limits = True, None, {}
         try:
             got = METRICS[check['metric']](trace, roles, with_shared(check, profile))
             value, detail = got[:2]
             at = round(got[2], 1) if len(got) > 2 and got[2] is not None else None
+            limits = got[3] if len(got) > 3 else {}
         except Absent as why:
             value, detail = None, str(why)
         except NotJudged as why:
             value, detail, judged = None, 'not judged: %s' % why, False
-        low, high = check.get('min'), check.get('max')
+        low, high = limits.get('min', check.get('min')), limits.get('max', check.get('max'))
         passed = value is not None and (low is None or value >= low) and \
             (high is None or value <= high)
-        results.append({'name': check['name'], 'metric': check['metric'], 'value': value,
-                        'threshold': threshold_text(check),
-                        'passed': bool(passed) if judged else None, 'judged': judged,
-                        'detail': detail, 'at': at})
+        results.append(dict({'name': check['name'], 'metric': check['metric'], 'value': value,
+                             'threshold': threshold_text(dict(check, **limits)),
+                             'passed': bool(passed) if judged else None, 'judged': judged,
+                             'detail': detail, 'at': at}, **({'limits': limits} if limits
+                                                             else {})))
     return results

@@ -19,7 +19,6 @@ from exp_assignment2.grading.judge.trace import NotJudged
 from exp_assignment2.grading.plan.profile_keys import with_shared
 
 SWEEP = 0.3          # rad: a head turned this far each way after an arrival is looking around
-LONGEST = 120.0      # s after an arrival a reference's look is waited for
 
 
 def percentile(values, share):
@@ -33,27 +32,32 @@ def distances(trace, roles, check):
     """{'stop_distances': [m from the ball where it came to rest at each arrival after
     which it looked around], 'sweeps': [rad the head turned each way then, the lesser],
     'sweep_times': [s from the arrival to the head's second side],
-    'trailing': [m to the moving ball while it was in view, the robot awake]}."""
+    'trailing': [m to the moving ball while it was in view, the robot awake],
+    'per_place': [s the ball was out of its sight for each place it wandered to]}."""
     track = bt.samples(trace, roles.robot.name, roles.ball.name, roles.head.name,
                        check.get('arena'))
     speeds, sight = bt.ball_speeds(track), bt.Sight(trace, roles, check)
     asleep = behaviours._asleep(track, check)
-    out = {'stop_distances': [], 'sweeps': [], 'sweep_times': [], 'trailing': []}
-    found = arrivals.arrivals(track, float('inf'), sight, asleep)
-    rest_end = {track[i0].t: track[i1].t for i0, _, i1 in found}
-    for look in arrivals.looks(track, found, SWEEP, LONGEST):
-        if look.left is None or look.right is None:
+    out = {'stop_distances': [], 'sweeps': [], 'sweep_times': [], 'trailing': [],
+           'per_place': []}
+    # each arrival's look is the head while the reference stayed there (it looks while
+    # it rests): what it turned and how long it took, where it came to rest
+    for i0, why, i1 in arrivals.arrivals(track, float('inf'), sight, asleep):
+        during = [s for s in track[i0:i1 + 1] if s.head is not None]
+        left = next((s.t for s in during if s.head >= SWEEP), None)
+        right = next((s.t for s in during if s.head <= -SWEEP), None)
+        if why is not None or left is None or right is None:
             continue
-        # how far it looked: the head while it stayed there (or until the look's end)
-        until = max(look.done, rest_end[look.t])
-        during = [s.head for s in track if look.t <= s.t <= until and s.head is not None]
-        out['stop_distances'].append(look.distance)
-        out['sweeps'].append(round(min(max(during), -min(during)), 3))
-        out['sweep_times'].append(round(look.done - look.t, 1))
+        out['stop_distances'].append(round(arrivals.settled_distance(track, i0, i1), 2))
+        out['sweeps'].append(round(min(max(s.head for s in during),
+                                       -min(s.head for s in during)), 3))
+        out['sweep_times'].append(round(max(left, right) - track[i0].t, 1))
     for i, s in enumerate(track):
         if speeds[i] is not None and speeds[i] >= bt.MOVING and i not in asleep \
                 and sight.sees(s):
             out['trailing'].append(round(bt.distance(s), 3))
+    places, unseen, _ = behaviours.wandered(trace, roles, check)
+    out['per_place'] = [round(unseen / len(places), 1)] if places else []
     return out
 
 

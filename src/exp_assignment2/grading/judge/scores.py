@@ -70,7 +70,8 @@ def run_score(run, profile):
                        'visibility': spec.get('visibility', 'visible'),
                        'points': None if verdict in NO_SCORE or unjudged else
                        0.0 if verdict in ZERO or i >= len(got) else
-                       check_points(spec, mine.get('value'))})
+                       check_points(dict(spec, **(mine.get('limits') or {})),
+                                    mine.get('value'))})
         if unjudged:
             checks[-1]['pending'] = True
     if verdict in NO_SCORE:

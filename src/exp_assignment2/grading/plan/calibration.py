@@ -72,6 +72,12 @@ def derive(profile, traces, say):
         _set(out, 'looks_both_ways', window=window)
         say('head judged %g s after each arrival: the reference\'s slowest look both ways took '
             '%.1f s; + 25 %%, at least %g s' % (window, max(times), WINDOW))
+    per_place = [p for f in found for p in f.get('per_place', [])]
+    if per_place:
+        per = reference.round_up(max(per_place) / HALF, 5.0)
+        _set(out, 'wanders', per=per)
+        say('a place each %g s out of sight asked of a shorter run: the reference wandered to a '
+            'place each %s s; twice its slowest' % (per, ', '.join('%.1f' % p for p in per_place)))
     trailing = [d for f in found for d in f['trailing']]
     if trailing:
         follow = reference.round_up(reference.percentile(trailing, 0.75) * (1 + MARGIN), 0.5)

@@ -24,7 +24,7 @@ SCRIPT_KEYS = ('seed', 'seeds', 'hidden', 'model')
 # check keys that are a number (metrics.py and behaviours.py read them)
 NUMBER_KEYS = ('min', 'max', 'reach', 'tolerance', 'occasion', 'spacing', 'gap', 'follow',
                'moving', 'angle', 'stop', 'near', 'leave', 'own', 'closing', 'radius', 'grace',
-               'rest', 'look', 'window', 'settle', 'unseen')
+               'rest', 'look', 'window', 'settle', 'unseen', 'per')
 
 
 def _number(value):

@@ -1,0 +1,138 @@
+#!/usr/bin/env python3
+"""The grader on a real class, against a person's verdicts: ``bash tools/run
+bench real-class CLASS [--hand FILE] [--out DIR] [--report-only] [GRADE OPTIONS]``.
+
+CLASS is a folder of real submissions, one folder per profile (``CLASS/dog``,
+``CLASS/miro``: each student's repository as handed in, see docs/real_class.md
+for how to fetch the class of ``bench/real_class.yaml``). Each profile's folder
+is graded with the defaults (``tools/run grade``, the options after CLASS given
+to it), then each submission's verdict and check results are compared with the
+verdicts a person signed running it by hand (``--hand``, default
+``bench/real_class.yaml``): a verdict agrees when the verdict is the same and
+every check the person judged (``passed``, ``failed``, ``not judged``; ``any``
+where either is right) came out the same. It prints the agreement ("8 of 10
+verdicts as by hand") and each disagreement with its check, the grader's figure
+and detail, and the person's reason. ``--report-only`` compares the gradings
+already in ``--out`` without running anything.
+
+It is a benchmark, not a test: it needs the class's repositories (CI has no
+network) and takes the time a grading takes.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+
+import yaml
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(HERE)
+OUTCOMES = ('passed', 'failed', 'not judged', 'any')
+
+
+def outcome(check):
+    """A check's result as a person says it."""
+    passed = check.get('passed')
+    return 'not judged' if passed is None else 'passed' if passed else 'failed'
+
+
+JUDGED = ('passed', 'failed_checks')     # the verdicts the checks decide
+
+
+def compare(hand, graded):
+    """[(check or 'verdict', by hand, by the grader, the grader's detail)] where they
+    differ, for one submission (``graded``: its summary in report.json, or None). A
+    check the person left to chance (``any``: a sleep that comes at random) may turn
+    the verdict either way: passed against failed_checks with every other check as by
+    hand is as by hand."""
+    if graded is None:
+        return [('verdict', hand['verdict'], 'not graded', '')]
+    out = []
+    checks = {c['name']: c for c in graded.get('checks') or []}
+    for name, said in (hand.get('checks') or {}).items():
+        if said == 'any':
+            continue
+        check = checks.get(name)
+        got = outcome(check) if check else 'not run'
+        if got != said:
+            out.append((name, said, got, '%s | %s' % (
+                check.get('value'), check.get('detail') or '') if check else ''))
+    chance = any(said == 'any' for said in (hand.get('checks') or {}).values())
+    if graded['verdict'] != hand['verdict'] and not (
+            chance and not out and {graded['verdict'], hand['verdict']} <= set(JUDGED)):
+        out.insert(0, ('verdict', hand['verdict'], graded['verdict'],
+                       graded.get('reason') or ''))
+    return out
+
+
+def load_hand(path):
+    """The person's verdicts: {name: {'profile', 'verdict', 'checks', 'why', ...}}."""
+    with open(path) as f:
+        data = yaml.safe_load(f)
+    for name, hand in data['submissions'].items():
+        for check, said in (hand.get('checks') or {}).items():
+            if said not in OUTCOMES:
+                raise SystemExit('%s: %s: %s: %r is not one of %s' % (
+                    path, name, check, said, ', '.join(OUTCOMES)))
+    return data['submissions']
+
+
+def grade(folder, out, profile, options):
+    """Grade one profile's folder with tools/run grade; its exit code."""
+    command = ['bash', os.path.join(REPO, 'tools', 'run'), 'grade', folder, '--out', out,
+               '--profile', profile] + options
+    print('$ ' + ' '.join(command), flush=True)
+    return subprocess.call(command)
+
+
+def report(hand, outs):
+    """Print the agreement; the number of verdicts as by hand."""
+    graded = {}
+    for out in outs:
+        path = os.path.join(out, 'report.json')
+        if os.path.isfile(path):
+            with open(path) as f:
+                graded.update({s['name']: s for s in json.load(f)['submissions']})
+    same = 0
+    for name, said in sorted(hand.items(), key=lambda item: item[0].lower()):
+        differ = compare(said, graded.get(name))
+        same += not differ
+        print('%-16s by hand %-13s grader %-13s %s' % (
+            name, said['verdict'], (graded.get(name) or {}).get('verdict', 'not graded'),
+            'as by hand' if not differ else 'DIFFERS'))
+        for check, mine, theirs, detail in differ:
+            print('    %s: by hand %s, grader %s%s' % (check, mine, theirs,
+                                                      (': ' + detail[:200]) if detail else ''))
+        if differ and said.get('why'):
+            print('    by hand: %s' % ' '.join(said['why'].split())[:400])
+    print('%d of %d verdicts as by hand' % (same, len(hand)))
+    return same
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
+    parser.add_argument('classes', help='the class: one folder per profile (dog/, miro/)')
+    parser.add_argument('--hand', default=os.path.join(HERE, 'real_class.yaml'))
+    parser.add_argument('--out', default='real-class-grading')
+    parser.add_argument('--report-only', action='store_true')
+    args, options = parser.parse_known_args(argv)
+    hand = load_hand(args.hand)
+    outs = []
+    for profile in sorted({h['profile'] for h in hand.values()}):
+        folder = os.path.join(args.classes, profile)
+        out = os.path.join(os.path.abspath(args.out), profile)
+        outs.append(out)
+        if args.report_only:
+            continue
+        if not os.path.isdir(folder):
+            print('%s: no folder of the %s class (docs/real_class.md says how to fetch it)'
+                  % (folder, profile))
+            continue
+        grade(folder, out, profile, options)
+    same = report(hand, outs)
+    return 0 if same == len(hand) else 1
+
+
+if __name__ == '__main__':
+    sys.exit(main())
