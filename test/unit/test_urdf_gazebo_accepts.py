@@ -133,11 +133,8 @@ def test_a_static_or_kinematic_model_masses_are_not_checked(engine, gazebo):
 
 
 @pytest.mark.parametrize('old,new,message', [
-    (INERTIAL % 2, INERTIAL % -2, 'model r: link base_link: mass -2 is negative'),
-    (INERTIAL % 2, INERTIAL % 'nan', "model r: link base_link mass: expected 1 finite numbers, "
-                                     "got 'nan'"),
-    (INERTIAL % 2, (INERTIAL % 2).replace('ixx="0.01"', 'ixx="nan"'),
-     "model r: link base_link inertia ixx: expected 1 finite numbers, got 'nan'"),
+    (INERTIAL % 2, INERTIAL % -2, "model r: link base_link: mass -2 is negative (Gazebo's ODE "
+                                  "refuses it: 'Setting custom link ... mass to zero!')"),
     ('<box size="0.4 0.3 0.1"/>', '<box size="1e30 1e30 1e30"/>',
      'model r: link base_link collision: <box> size 1e+30 1e+30 1e+30: each must be in '
      '[0, 10000]'),

@@ -124,7 +124,7 @@ class Engine(object):
                                      for v in pose):
             raise SpawnError('model %s: the pose %s is not 6 finite numbers' % (name, pose))
         try:
-            urdf = urdf_reader.parse(urdf_text, base_dir)
+            urdf = urdf_reader.parse(urdf_text, base_dir, spawn_rpy=pose[3:])
         except ValueError as exc:
             raise SpawnError('model %s: %s' % (name, exc))
         try:
@@ -137,6 +137,8 @@ class Engine(object):
         finally:
             if plugins is None:      # refused (SpawnError) or broken: the world unchanged
                 model.remove()
+        for text in urdf.errors:
+            self.log.error('model %s: %s' % (name, text))
         for text in urdf.warnings + urdf.gazebo.warnings:
             self.log.warn('model %s: %s' % (name, text))
         self.models[name] = model

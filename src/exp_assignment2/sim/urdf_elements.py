@@ -1,7 +1,13 @@
-"""The elements of a URDF read one by one (no ROS, no pybullet, no GL): a link's
-visuals and collisions with their geometry and colour, its mass, a joint, the
-named materials, an ``<origin>``; mesh paths resolved. :func:`~.urdf.parse`
-puts them together into a model."""
+"""The elements of a URDF read one by one, as urdfdom reads them (no ROS, no
+pybullet, no GL): a visual's or collision's geometry, a link's mass, a joint,
+the named materials, an ``<origin>``; mesh paths resolved. A link's elements
+are put together by :mod:`.urdf_links`, the model by :func:`~.urdf.parse`.
+
+urdfdom (the parser of every ROS release, and Gazebo's through sdformat)
+refuses a URDF for a joint it cannot read, but only drops a link's element
+it cannot read (:mod:`.urdf_links`): a :class:`UrdfError` from a visual or an
+inertial is such a drop, a :class:`BreaksTheWorld` is a refusal urdfdom does
+not make (pybullet cannot hold the value, or Gazebo's ODE refuses it later)."""
 import math
 import os
 from collections import namedtuple
@@ -28,6 +34,15 @@ joint frame, limits (lower/upper None for continuous joints)."""
 
 class UrdfError(ValueError):
     """A URDF that cannot be read, with the reason."""
+
+
+class BreaksTheWorld(UrdfError):
+    """A value urdfdom reads but that would break the world (a 1e30 m box, a
+    negative mass: Gazebo's ODE throws on it): the model is refused."""
+
+# urdfdom's joint types; it reads no axis of the last two (joint.cpp)
+MOVING_JOINTS = ('revolute', 'continuous', 'prismatic', 'planar')
+AXISLESS_JOINTS = ('fixed', 'floating')
 
 
 def floats(text, n, default, where='value'):
@@ -77,107 +92,191 @@ def resolve_mesh_path(filename, base_dir):
 
 
 def geometry(elem, where, base_dir):
+    """(kind, params) of an element's ``<geometry>``; UrdfError with
+    urdfdom's words when it cannot read it (link.cpp's parseGeometry)."""
     geom = elem.find('geometry')
-    shape = geom[0] if geom is not None and len(geom) else None
+    if geom is None:
+        raise UrdfError('%s: no <geometry>' % where)
+    shape = next((c for c in geom if isinstance(c.tag, str)), None)
     if shape is None:
-        raise UrdfError('%s: no geometry' % where)
+        raise UrdfError('%s: Geometry tag contains no child element.' % where)
     kind, a = shape.tag, shape.attrib
-    try:
-        if kind == 'box':
-            size = floats(a.get('size'), 3, (1, 1, 1), where + ' box size')
-            return kind, {'size': extents(size, where, kind, 'size')}
-        if kind in ('cylinder', 'capsule'):
-            return kind, {'radius': extents([float(a['radius'])], where, kind, 'radius')[0],
-                          'length': extents([float(a['length'])], where, kind, 'length')[0]}
-        if kind == 'sphere':
-            return kind, {'radius': extents([float(a['radius'])], where, kind, 'radius')[0]}
-        if kind == 'mesh':
+    if kind == 'box':
+        if a.get('size') is None:
+            raise UrdfError('%s: Box shape has no size attribute' % where)
+        size = floats(a.get('size'), 3, (1, 1, 1), where + ' box size')
+        return kind, {'size': extents(size, where, kind, 'size')}
+    if kind in ('cylinder', 'capsule'):     # capsule: pybullet's, urdfdom drops it
+        if a.get('length') is None or a.get('radius') is None:
+            raise UrdfError('%s: Cylinder shape must have both length and radius attributes'
+                            % where)
+        return kind, {'radius': extents([_number(a, 'radius', where)], where, kind, 'radius')[0],
+                      'length': extents([_number(a, 'length', where)], where, kind, 'length')[0]}
+    if kind == 'sphere':
+        if a.get('radius') is None:
+            raise UrdfError('%s: Sphere shape must have a radius attribute' % where)
+        return kind, {'radius': extents([_number(a, 'radius', where)], where, kind, 'radius')[0]}
+    if kind == 'mesh':
+        if a.get('filename') is None:
+            raise UrdfError('%s: Mesh must contain a filename attribute' % where)
+        try:
             scale = floats(a.get('scale'), 3, (1, 1, 1), where + ' scale')
-            extents([abs(s) for s in scale], where, kind, 'scale')
-            return kind, {'filename': resolve_mesh_path(a['filename'], base_dir),
-                          'scale': scale}
-    except UrdfError:
-        raise           # already says where
-    except (KeyError, ValueError) as exc:
-        raise UrdfError('%s: <%s> %s' % (where, kind, exc))
-    return kind, {}    # an unknown shape: kept, not drawn (the renderer says so)
+        except UrdfError as exc:
+            raise UrdfError('%s: Mesh scale was specified, but could not be parsed (%s)'
+                            % (where, exc))
+        extents([abs(v) for v in scale], where, kind, 'scale')
+        return kind, {'filename': resolve_mesh_path(a['filename'], base_dir), 'scale': scale}
+    raise UrdfError("%s: Unknown geometry type '%s'" % (where, kind))
+
+
+def _number(attrib, name, where):
+    try:
+        value = float(attrib[name])
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value):
+        raise UrdfError('%s: %s [%s] is not a valid float' % (where, name, attrib[name]))
+    return value
 
 
 def extents(values, where, kind, name):
     """``values`` if each is a size pybullet can hold: finite, in [0, MAX_EXTENT]."""
     if not all(math.isfinite(v) and 0.0 <= v <= MAX_EXTENT for v in values):
-        raise UrdfError('%s: <%s> %s %s: each must be in [0, %g]'
+        raise BreaksTheWorld('%s: <%s> %s %s: each must be in [0, %g]'
                         % (where, kind, name, ' '.join('%.10g' % v for v in values),
                            MAX_EXTENT))
     return tuple(values)
 
 
 def materials(root, where):
-    """Named materials: top level first, then any named inline one."""
-    materials = {}
-    for level in (root.findall('material'), root.iter('material')):
+    """({name: RGBA}, [error lines]): the named materials, top level first,
+    then any named inline one. A colour urdfdom cannot read is logged and
+    the material left without it, as urdfdom's parseMaterial does."""
+    found, lines = {}, []
+    for top, level in ((True, root.findall('material')), (False, root.iter('material'))):
         for m in level:
             c = m.find('color')
-            if c is not None and m.get('name') and m.get('name') not in materials:
-                materials[m.get('name')] = floats(c.get('rgba'), 4, DEFAULT_RGBA,
-                                                  '%s material %s' % (where, m.get('name')))
-    return materials
+            if c is None or not m.get('name') or m.get('name') in found:
+                continue
+            rgba, error = material_colour(m, {}, '%s material %s' % (where, m.get('name')))
+            if error and top:       # an inline one is said where its visual is read
+                lines.append(error)
+            elif rgba is not None:
+                found[m.get('name')] = rgba
+    return found, lines
 
 
-def link(elem, materials, gazebo_colour, base_dir):
-    name = elem.get('name')
-    visuals, collisions = [], []
-    for kind, out in (('visual', visuals), ('collision', collisions)):
-        for v in elem.findall(kind):
-            where = 'link %s %s' % (name, kind)
-            shape, params = geometry(v, where, base_dir)
-            rgba = DEFAULT_RGBA
-            mat = v.find('material')
-            if mat is not None:
-                c = mat.find('color')
-                rgba = (floats(c.get('rgba'), 4, DEFAULT_RGBA, where + ' color')
-                        if c is not None else materials.get(mat.get('name'), DEFAULT_RGBA))
-            if gazebo_colour is not None:
-                rgba = gazebo_colour
-            out.append(Visual(origin_matrix(v, where), shape, params, tuple(rgba)))
-    return Link(name, visuals, collisions, mass(elem.find('inertial'), name))
+def material_colour(mat, materials, where):
+    """(RGBA or None, error line or None) of a visual's ``<material>``: its
+    inline colour, else the named top-level one. urdfdom logs a bad inline
+    colour and goes on without it (link.cpp's parseMaterial)."""
+    c = mat.find('color')
+    if c is not None and c.get('rgba') is not None:
+        try:
+            rgba = floats(c.get('rgba'), 4, DEFAULT_RGBA, where + ' color')
+            if all(0.0 <= v <= 1.0 for v in rgba):
+                return tuple(rgba), None
+        except UrdfError:
+            pass
+        return materials.get(mat.get('name')), (
+            '%s: Material [%s] has malformed color rgba values: %r (urdfdom: 4 numbers in '
+            '[0, 1]); drawn without it' % (where, mat.get('name'), c.get('rgba')))
+    return materials.get(mat.get('name')), None
 
 
 def mass(inertial, name):
-    """A link's mass (0 without an ``<inertial>``); every number of the
-    inertial finite (ODE's bodies go NaN otherwise), the mass >= 0."""
-    if inertial is None:
-        return 0.0
-    mass = inertial.find('mass')
-    value = floats(mass.get('value', '0'), 1, (0.0,), 'link %s mass' % name)[0] \
-        if mass is not None else 0.0
-    if value < 0:
-        raise UrdfError('link %s: mass %.10g is negative' % (name, value))
+    """A link's mass from its ``<inertial>``, as urdfdom's parseInertial
+    reads it: UrdfError (urdfdom's words) for what it cannot read; the mass
+    read before an unreadable ``<inertia>`` is kept (``exc.mass``)."""
+    where = 'link %s inertial' % name
+    try:
+        origin_matrix(inertial, where + ' origin')
+    except UrdfError as exc:
+        raise _with_mass(exc, 0.0)
+    element = inertial.find('mass')
+    if element is None:
+        raise _with_mass(UrdfError('%s: Inertial element must have a mass element' % where), 0.0)
+    if element.get('value') is None:
+        raise _with_mass(UrdfError('%s: Inertial: mass element must have value attribute'
+                                   % where), 0.0)
+    try:
+        value = floats(element.get('value'), 1, (0.0,))[0]
+    except UrdfError:
+        raise _with_mass(UrdfError('%s: Inertial: mass [%s] is not a valid double'
+                                   % (where, element.get('value'))), 0.0)
+    if value < 0:       # urdfdom reads it; Gazebo's ODE throws (ODELink::UpdateMass)
+        raise BreaksTheWorld("link %s: mass %.10g is negative (Gazebo's ODE refuses it: "
+                             "'Setting custom link ... mass to zero!')" % (name, value))
     block = inertial.find('inertia')
+    if block is None:
+        raise _with_mass(UrdfError('%s: Inertial element must have inertia element' % where),
+                         value)
     for key in ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz'):
-        floats(block.get(key) if block is not None else None, 1, (0.0,),
-               'link %s inertia %s' % (name, key))
-    origin_matrix(inertial, 'link %s inertial origin' % name)
+        if block.get(key) is None:
+            raise _with_mass(UrdfError('%s: Inertial: inertia element missing %s attribute'
+                                       % (where, key)), value)
+        try:
+            floats(block.get(key), 1, (0.0,))
+        except UrdfError:
+            raise _with_mass(UrdfError('%s: Inertial: inertia element %s is not a valid double'
+                                       % (where, key)), value)
     return value
 
 
+def _with_mass(exc, value):
+    exc.mass = value
+    return exc
+
+
 def joint(elem):
+    """A :class:`Joint` as urdfdom's parseJoint reads it: no axis for a
+    fixed or floating joint; a moving joint's axis as given, even zero
+    (``axis`` is then (0, 0, 0): :func:`~.urdf.parse` makes it what Gazebo
+    makes of it); UrdfError with urdfdom's words for what it refuses."""
     name, kind = elem.get('name'), elem.get('type')
     where = 'joint %s' % name
     parent, child = elem.find('parent'), elem.find('child')
-    if parent is None or child is None or kind is None:
-        raise UrdfError('%s: needs a type, a parent and a child' % where)
-    axis = np.array(floats(elem.find('axis').get('xyz') if elem.find('axis') is not None
-                           else None, 3, (1, 0, 0), where + ' axis'))
-    if np.linalg.norm(axis) == 0:
-        raise UrdfError('%s: the axis is zero' % where)
-    limit = elem.find('limit')
+    if kind is None:
+        raise UrdfError("%s: joint [%s] has no type, check to see if it's a reference."
+                        % (where, name))
+    if kind not in MOVING_JOINTS + AXISLESS_JOINTS:
+        raise UrdfError('%s: Joint [%s] has no known type [%s] (urdfdom knows %s)'
+                        % (where, name, kind, ', '.join(MOVING_JOINTS + AXISLESS_JOINTS)))
+    if parent is None or child is None or not parent.get('link') or not child.get('link'):
+        raise UrdfError('%s: Joint [%s] is missing a parent and/or child link specification.'
+                        % (where, name))
+    origin = origin_matrix(elem, where)
+    axis = np.array((1.0, 0.0, 0.0))
+    element = elem.find('axis')
+    if kind in MOVING_JOINTS and element is not None and element.get('xyz') is not None:
+        try:
+            axis = np.array(floats(element.get('xyz'), 3, (1, 0, 0), where + ' axis'))
+        except UrdfError as exc:
+            raise UrdfError('%s: Malformed axis element for joint [%s]: %s' % (where, name, exc))
+    norm = np.linalg.norm(axis)
     lower = upper = None
     effort = velocity = float('inf')
+    limit = elem.find('limit')
     if limit is not None:
-        effort = float(limit.get('effort', 'inf'))
-        velocity = float(limit.get('velocity', 'inf'))
-        if kind in ('revolute', 'prismatic'):
-            lower, upper = float(limit.get('lower', 0)), float(limit.get('upper', 0))
-    return Joint(name, kind, parent.get('link'), child.get('link'), origin_matrix(elem, where),
-                 axis / np.linalg.norm(axis), lower, upper, effort, velocity)
+        effort, velocity = (_limit(limit, key, 'inf', where) for key in ('effort', 'velocity'))
+        lower, upper = (_limit(limit, key, '0', where) for key in ('lower', 'upper'))
+        if kind not in ('revolute', 'prismatic'):
+            lower = upper = None
+    elif kind == 'revolute':
+        raise UrdfError('%s: Joint [%s] is of type REVOLUTE but it does not specify limits'
+                        % (where, name))
+    elif kind == 'prismatic':
+        raise UrdfError('%s: Joint [%s] is of type PRISMATIC without limits' % (where, name))
+    return Joint(name, kind, parent.get('link'), child.get('link'), origin,
+                 axis / norm if norm > 0 else axis * 0.0, lower, upper, effort, velocity)
+
+
+def _limit(limit, key, default, where):
+    text = limit.get(key, default)
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if math.isnan(value) or (key in ('lower', 'upper') and not math.isfinite(value)):
+        raise UrdfError('%s: %s value (%s) is not a valid float' % (where, key, text))
+    return value
