@@ -126,15 +126,15 @@ def test_options_are_typed_and_say_what_was_wrong():
     assert o.boolean('on', False) is True and o.boolean('off', True) is False
     assert o.text('name') == 'x' and o.text('nested', 'd') == 'd'
     assert o.raw('nested') == {'a': '1'}
-    with pytest.raises(PluginError, match=r"model m: plugin p: <bad> must be a number, "
-                                          r"got 'fast'"):
-        o.number('bad', 1.0)
+    assert o.number('bad', 1.0) == 0.0       # as a C++ stream reads it, with a note
+    assert o.notes == ["model m: plugin p: <bad> 'fast' is not a number: Gazebo reads it as 0"]
     with pytest.raises(PluginError, match='must be true or false'):
         o.boolean('bad', True)
     with pytest.raises(PluginError, match='must be positive'):
         Options({'r': '0'}, 'w').number('r', 1.0, positive=True)
-    with pytest.raises(PluginError, match='must be finite'):
-        Options({'r': 'inf'}, 'w').number('r', 1.0)
+    with pytest.raises(PluginError, match='must be other than 0'):
+        Options({'r': 'inf'}, 'w').number('r', 1.0, nonzero=True)
+    assert Options({'r': '0.3 m'}, 'w').number('r', 1.0) == 0.3
 
 
 def test_one_colour_per_gazebo_material_in_urdf_and_sdf():

@@ -4,9 +4,11 @@ world and model properties (``/gazebo/...`` with the node named ``gazebo``).
 Every request is carried out in the simulation thread (the engine's
 ``call_and_wait``); a refused one answers ``success: false`` with a status
 message that says why, logs one line (throttled per service) and changes
-nothing.
+nothing. As gazebo_ros' api plugin, ``spawn_sdf_model`` also spawns a URDF
+(its ``<robot>`` root says so); ``spawn_urdf_model`` takes URDF only.
 """
 import math
+import xml.etree.ElementTree as ET
 
 import rospy
 from gazebo_msgs.srv import (DeleteModel, DeleteModelResponse, GetModelProperties,
@@ -76,6 +78,8 @@ class GazeboWorld(object):
         return self._spawn(req, req.model_xml, 'spawn_urdf_model')
 
     def _spawn_sdf(self, req):
+        if root_tag(req.model_xml) == 'robot':      # gazebo_ros' spawnSDFModel takes URDF too
+            return self._spawn(req, req.model_xml, 'spawn_sdf_model')
         if self.sdf_to_urdf is None:
             return SpawnModelResponse(False, self.refused(
                 'spawn_sdf_model', 'model %s: SDF models are not supported here' %
@@ -153,3 +157,11 @@ class GazeboWorld(object):
     def close(self):
         for service in self.services:
             service.shutdown()
+
+
+def root_tag(text):
+    """The XML root element's tag, or None when ``text`` is not XML."""
+    try:
+        return ET.fromstring(text).tag
+    except ET.ParseError:
+        return None

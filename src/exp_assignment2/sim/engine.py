@@ -17,14 +17,14 @@ import logging
 import math
 import threading
 
-from exp_assignment2.sim import releases, scripted_ball, urdf as urdf_reader
+from exp_assignment2.sim import plugin_loading, releases, scripted_ball, urdf as urdf_reader
 from exp_assignment2.sim.calls import Calls
 from exp_assignment2.sim.model import Model
 from exp_assignment2.sim.pacing import MAX_REAL_TIME_FACTOR, Pacer
 from exp_assignment2.sim.physics import Physics
 from exp_assignment2.refusal import RefusalLog
 from exp_assignment2.sim.poses import MAX_COORDINATE, world_region
-from exp_assignment2.sim.plugins.base import EngineHandle, Plugin, PluginError
+from exp_assignment2.sim.plugins.base import EngineHandle, Plugin
 
 INFINITE_BOUNDS = (-math.inf, math.inf, -math.inf, math.inf)
 # The guard's world: a body farther than this beyond the bounds, or below
@@ -58,7 +58,8 @@ class Engine(object):
     """The world and its clock (see the module docstring).
 
     :param registry: ``{filename: Plugin subclass}``; other plugin file names
-        get one warning each and are ignored, as Gazebo would fail to load them
+        are ignored: one warning for a library the release's Gazebo had,
+        Gazebo's error for one it did not (:mod:`.gazebo_libraries`)
     :param bounds: (x_min, x_max, y_min, y_max) that driven bodies keep within
     :param settings: host settings handed to plugins (``EngineHandle.settings``);
         ``ros_release`` names the :class:`~.releases.Release` its plugins follow,
@@ -111,8 +112,9 @@ class Engine(object):
     def spawn(self, name, urdf_text, pose=(0.0, 0.0, 0.0, 0.0, 0.0, 0.0), namespace='',
               base_dir='.', grid=False, hidden=False):
         """Add a model; returns its :class:`Model`. SpawnError (the world
-        unchanged) for a taken name, a pose that is not finite, a URDF that
-        cannot be read or a plugin that refuses to load."""
+        unchanged) for a taken name, a pose that is not finite or a URDF that
+        cannot be read; a plugin that cannot load is logged and left out, as
+        Gazebo leaves it out (:mod:`.plugin_loading`)."""
         if not name or not isinstance(name, str):
             raise SpawnError('a model needs a name')
         if name in self.models:
@@ -131,43 +133,22 @@ class Engine(object):
             model = Model(self.physics, name, urdf, pose, namespace, grid, hidden)
         except ValueError as exc:
             raise SpawnError('model %s: %s' % (name, exc))
-        plugins = None
-        try:
-            plugins = self._load_plugins(model)
-        finally:
-            if plugins is None:      # refused (SpawnError) or broken: the world unchanged
-                model.remove()
         for text in urdf.errors:
             self.log.error('model %s: %s' % (name, text))
         for text in urdf.warnings + urdf.gazebo.warnings:
             self.log.warn('model %s: %s' % (name, text))
+        plugins = None
+        try:
+            plugins = plugin_loading.load(model, self.registry, self.handle, self._warned)
+        finally:
+            if plugins is None:      # broken: the world unchanged
+                model.remove()
         self.models[name] = model
         self.plugins[name] = plugins
         if self.scripted_ball is not None:
             self.scripted_ball.spawned(model)
         self._changed()
         return model
-
-    def _load_plugins(self, model):
-        plugins = []
-        try:
-            for decl in model.urdf.gazebo.plugins:
-                cls = self.registry.get(decl.filename)
-                if cls is None:
-                    if decl.filename not in self._warned:
-                        self._warned.add(decl.filename)
-                        self.log.warn('model %s: plugin %s (%s) is not simulated here; '
-                                      'ignored' % (model.name, decl.name, decl.filename))
-                    continue
-                plugin = cls(model, decl, self.handle)
-                plugin.load()
-                plugins.append(plugin)
-        except (PluginError, ValueError, KeyError) as exc:
-            for plugin in plugins:
-                plugin.close()
-            raise SpawnError(str(exc) if isinstance(exc, ValueError)
-                             else 'model %s: %s' % (model.name, exc))
-        return plugins
 
     def delete(self, name):
         """Remove a model and close its plugins; SpawnError if there is none."""
@@ -285,5 +266,4 @@ class Engine(object):
             if hasattr(shared, 'close'):
                 shared.close()
         self.physics.close()
-
 

@@ -51,7 +51,11 @@ def sensor_spec(plugin, settings):
     degrees) overriding what the URDF says."""
     sensor = plugin.sensor
     if sensor is None or sensor.type != 'camera':
-        raise PluginError('%s: must sit in a <sensor type="camera">' % plugin.options.where)
+        raise PluginError('%s: must sit in a <sensor type="camera">' % plugin.options.where,
+                          None if sensor is not None else  # Gazebo's, for a model plugin
+                          'Model[%s] is attempting to load a plugin, but detected an incorrect '
+                          'plugin type. Plugin filename[%s] name[%s]'
+                          % (plugin.model.name, plugin.filename, plugin.name))
     cam = sensor.options.get('camera', {})
     cam = cam if isinstance(cam, dict) else {}
     image, clip = cam.get('image') or {}, cam.get('clip') or {}

@@ -21,7 +21,7 @@ class JointStatePublisherPlugin(Plugin):
             raise PluginError('%s: no joint %s in the model' % (self.options.where,
                                                                 ', '.join(missing)))
         self.joints = names or None
-        self.every = Every(self.options.number('updateRate', 100.0, minimum=0.0),
+        self.every = Every(self.options.number('updateRate', 100.0),
                            lambda: self.engine.time)
         self.pub = rospy.Publisher(self.topic('joint_states'), JointState, queue_size=10)
         joint_claims(self.engine, self.topic('joint_states'))[self] = set(

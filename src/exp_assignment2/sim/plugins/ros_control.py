@@ -17,6 +17,13 @@ is read once the parameters have been still for 0.2 s):
 * ``velocity_controllers/`` and ``effort_controllers/JointVelocityController``:
   ``<ns>/<name>/command`` is the joint's velocity.
 
+The robot namespace is the plugin's ``robotNamespace``, else the spawn's,
+else the model's name (gazebo_ros_control's default). A second plugin on a
+namespace another one serves (a template's ``<gazebo>`` and the student's own
+in one robot) is what Gazebo makes of it: roscpp refuses its services, one
+``Tried to advertise a service that is already advertised in this node``
+error each, and it runs no controller; the first serves them all.
+
 A controller naming a joint the model lacks, or of a type not listed, gets
 one warning and is ignored; one with no ``joint`` yet is given 2 s more (a
 loaded machine can take that long between two leaves of a YAML) before its
@@ -36,6 +43,10 @@ from exp_assignment2.sim.plugins.controllers import CONTROLLER_TYPES
 
 SETTLE = 0.2      # wall s without a parameter update before the namespace is read again
 PATIENCE = 2.0    # wall s more for a joint controller whose joint is not set yet
+# what ros_control's ControllerManager advertises, in its constructor's order
+ADVERTISED = ('list_controllers', 'list_controller_types', 'load_controller',
+              'unload_controller', 'switch_controller', 'reload_controller_libraries')
+SERVED = 'gazebo_ros_control namespaces'    # the engine's {namespace: plugin serving it}
 
 
 class RosControlPlugin(Plugin):
@@ -49,9 +60,23 @@ class RosControlPlugin(Plugin):
     FILENAMES = ('libgazebo_ros_control.so',)
     DEFAULT_SIM = 'gazebo_ros_control/DefaultRobotHWSim'
 
+    def default_namespace(self):
+        return self.model.name      # robot_namespace_ = parent_model_->GetName()
+
     def load(self):
         self.ns = '/' + self.namespace if self.namespace else ''
-        self.pid_gains = None
+        self.pid_gains = self.manager = None
+        served = self.engine.shared(SERVED, dict)
+        if self.ns in served:       # one Gazebo node: roscpp refuses, the plugin goes on
+            for service in ADVERTISED:
+                self.engine.log.error(
+                    'model %s: plugin %s (%s): Tried to advertise a service that is already '
+                    'advertised in this node [%s/controller_manager/%s] (by model %s): this '
+                    'controller manager serves nothing' % (
+                        self.model.name, self.name, self.filename, self.ns, service,
+                        served[self.ns].model.name))
+            return
+        served[self.ns] = self
         if self.options.text('robotSimType', self.DEFAULT_SIM) == self.DEFAULT_SIM:
             release, legacy = self.engine.release, self.options.boolean('legacyModeNS', None)
             if legacy is None and release.reads_legacy_mode_ns:     # as Gazebo's ROS_ERROR
@@ -95,18 +120,27 @@ class RosControlPlugin(Plugin):
                 self._rescan_in(PATIENCE, lambda: self._rescan(patient=False))
 
     def facts(self):
-        return dict(Plugin.facts(self), pid_gains=self.pid_gains)
+        return dict(Plugin.facts(self), pid_gains=self.pid_gains,
+                    serves=self.manager is not None)
 
     def before_step(self):
-        self.manager.apply()
+        if self.manager is not None:
+            self.manager.apply()
 
     def after_step(self):
-        self.manager.publish()
+        if self.manager is not None:
+            self.manager.publish()
 
     def reset(self):
-        self.manager.reset()
+        if self.manager is not None:
+            self.manager.reset()
 
     def close(self):
+        served = self.engine.shared(SERVED, dict)
+        if served.get(self.ns) is self:
+            del served[self.ns]
+        if self.manager is None:
+            return
         param_watch.unwatch_namespace(self.ns or '/', self._on_params)
         with self._lock:
             if self._timer is not None:
