@@ -105,28 +105,75 @@ class DiffDrive(object):
     ``swapped`` (Kinetic's legacyMode, see :mod:`.releases`). Which way the
     robot then turns is physics: where those joints are and which way their
     axes point.
+
+    ``acceleration`` (wheelAcceleration, m/s², 0: none, the default in
+    every release): as Gazebo's UpdateChild, while neither wheel is within
+    0.01 m/s of its speed, the speed asked of each wheel moves towards its
+    target by at most ``acceleration * dt`` from what it asked before.
     """
 
     def __init__(self, model, left, right, separation, diameter, torque, command,
-                 swapped=False):
+                 swapped=False, acceleration=0.0):
         for joint in (left, right):
             if not model.has_joint(joint):
                 raise ValueError('no joint %r in the model' % joint)
         self.model, self.joints, self.command = model, (left, right), command
         self.half, self.radius, self.torque = separation / 2.0, diameter / 2.0, torque
-        self.swapped = bool(swapped)
+        self.swapped, self.acceleration = bool(swapped), acceleration
+        self.asked = [0.0, 0.0]      # Gazebo's wheel_speed_instr_
 
     def turn_sign(self):
         """See :func:`turn_sign` (the swap included)."""
         sign = turn_sign(self.model.urdf, *self.joints)
         return -sign if self.swapped else sign
 
-    def apply(self):
+    def wheel_speeds(self):
+        """(left, right) surface speeds (m/s) the command asks of the wheels."""
         v, _, w = self.command.current()
         if self.swapped:
             w = -w
-        for joint, speed in zip(self.joints, (v - w * self.half, v + w * self.half)):
+        return v - w * self.half, v + w * self.half
+
+    def apply(self, dt=0.0):
+        """Set the wheels; ``dt``: s since the last update (for wheelAcceleration)."""
+        speeds = self.wheel_speeds()
+        if self.acceleration:
+            _, _, rates, _ = self.model.joint_states(self.joints)
+            current = [rate * self.radius for rate in rates]
+            if not any(abs(t - c) < 0.01 for t, c in zip(speeds, current)):
+                step = abs(self.acceleration) * dt
+                self.asked = [a + min(max(t - c, -step), step)
+                              for a, t, c in zip(self.asked, speeds, current)]
+                speeds = self.asked
+        for joint, speed in zip(self.joints, speeds):
             self.model.set_joint_velocity(joint, speed / self.radius, self.torque)
+
+    def reset(self):
+        self.asked = [0.0, 0.0]
+
+
+class SkidSteer(object):
+    """Gazebo's skid steer drive: a :class:`DiffDrive` for each pair of
+    wheels (front and rear), both on one command, as gazebo_ros_skid_steer_drive
+    turns its left joints at (v - w * s / 2) / r and its right ones at
+    (v + w * s / 2) / r."""
+
+    def __init__(self, model, left, right, separation, diameter, torque, command):
+        self.pairs = [DiffDrive(model, l, r, separation, diameter, torque, command)
+                      for l, r in zip(left, right)]
+        self.model, self.command = model, command
+        self.joints = tuple(left) + tuple(right)
+        self.radius, self.half = self.pairs[0].radius, self.pairs[0].half
+
+    def turn_sign(self):
+        return self.pairs[0].turn_sign()
+
+    def apply(self, dt=0.0):
+        for pair in self.pairs:
+            pair.apply(dt)
+
+    def reset(self):
+        pass
 
 
 class EncoderOdometry(object):

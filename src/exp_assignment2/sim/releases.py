@@ -23,7 +23,12 @@ release of each is the one simulated):
 * gazebo_ros_control's ``legacyModeNS`` (#637 in Kinetic, removed by #709 in
   Melodic 2.8.3): where DefaultRobotHWSim reads Gazebo's joint PID gains,
   ``/gazebo_ros_control/pid_gains/<joint>`` (Kinetic's legacy, the default
-  with an error line) or ``/<ns>/gazebo_ros_control/pid_gains/<joint>``.
+  with an error line) or ``/<ns>/gazebo_ros_control/pid_gains/<joint>``;
+* planar_move's ``cmdTimeout`` (#1133, Noetic 2.9.2): read by Noetic only (a
+  command older than it is dropped; -1, the default, keeps it for ever);
+  Kinetic and Melodic keep the last command for ever. The diff drive and
+  the skid steer drive keep it for ever in every release, and read their
+  ``wheelAcceleration`` / ``wheelTorque`` / ``updateRate`` alike in all three.
 
 The release is chosen by the simulator's ``~ros_release`` parameter, else the
 environment's :data:`ENV`, else :data:`DEFAULT` (:func:`choose`).
@@ -42,10 +47,11 @@ class ReleaseError(ValueError):
 
 class Release(namedtuple('Release', 'name gazebo gazebo_ros_pkgs legacy_mode legacy_mode_ns '
                                     'encoder_twist_in_child_frame prefix_frames_with_namespace '
-                                    'booleans')):
+                                    'booleans reads_cmd_timeout')):
     """One ROS release's Gazebo plugins. ``legacy_mode`` and ``legacy_mode_ns``
     are the tag's default when it is read, None when the release ignores it;
-    ``booleans``: the words gazebo_ros' getParameterBoolean takes (2.8.4 added 1 and 0)."""
+    ``booleans``: the words gazebo_ros' getParameterBoolean takes (2.8.4 added 1 and 0);
+    ``reads_cmd_timeout``: planar_move reads ``cmdTimeout``."""
 
     @property
     def reads_legacy_mode(self):
@@ -97,13 +103,13 @@ class Release(namedtuple('Release', 'name gazebo gazebo_ros_pkgs legacy_mode leg
 RELEASES = OrderedDict((r.name, r) for r in (
     Release('kinetic', '7', '2.5', legacy_mode=True, legacy_mode_ns=True,
             encoder_twist_in_child_frame=False, prefix_frames_with_namespace=True,
-            booleans=('true', 'false')),
+            booleans=('true', 'false'), reads_cmd_timeout=False),
     Release('melodic', '9', '2.8', legacy_mode=None, legacy_mode_ns=None,
             encoder_twist_in_child_frame=True, prefix_frames_with_namespace=True,
-            booleans=('true', 'false', '1', '0')),
+            booleans=('true', 'false', '1', '0'), reads_cmd_timeout=False),
     Release('noetic', '11', '2.9', legacy_mode=None, legacy_mode_ns=None,
             encoder_twist_in_child_frame=True, prefix_frames_with_namespace=False,
-            booleans=('true', 'false', '1', '0')),
+            booleans=('true', 'false', '1', '0'), reads_cmd_timeout=True),
 ))
 
 

@@ -13,9 +13,10 @@ __all__ = ['EngineHandle', 'Options', 'Plugin', 'PluginError', 'registry']
 def registry():
     """``{filename: Plugin subclass}`` of the ROS plugins."""
     from exp_assignment2.sim.plugins.camera import CameraPlugin
-    from exp_assignment2.sim.plugins.drive import DiffDrivePlugin, PlanarMovePlugin
+    from exp_assignment2.sim.plugins.drive import (DiffDrivePlugin, PlanarMovePlugin,
+                                                   SkidSteerDrivePlugin)
     from exp_assignment2.sim.plugins.joint_states import JointStatePublisherPlugin
     from exp_assignment2.sim.plugins.ros_control import RosControlPlugin
-    return {name: cls for cls in (DiffDrivePlugin, PlanarMovePlugin, CameraPlugin,
-                                  RosControlPlugin, JointStatePublisherPlugin)
+    return {name: cls for cls in (DiffDrivePlugin, SkidSteerDrivePlugin, PlanarMovePlugin,
+                                  CameraPlugin, RosControlPlugin, JointStatePublisherPlugin)
             for name in cls.FILENAMES}

@@ -4,7 +4,10 @@ read, the drive built, commands applied at the update rate. The ROS plugins
 benchmark register these cores under the same file names and drive the
 models by hand, through the very same stepping code.
 """
-from exp_assignment2.sim.drives import DiffDrive, EncoderOdometry, PlanarMove, VelocityCommand
+import re
+
+from exp_assignment2.sim.drives import (DiffDrive, EncoderOdometry, PlanarMove, SkidSteer,
+                                        VelocityCommand)
 from exp_assignment2.sim.plugins.base import Plugin, PluginError
 
 ODOMETRY_SOURCES = ('world', 'encoder')
@@ -33,14 +36,18 @@ class Every(object):
         self.next = self.now()
 
 
-def velocity_command(plugin):
+def velocity_command(plugin, timeout=None):
     """A :class:`~exp_assignment2.sim.drives.VelocityCommand` with the host's
-    limits and timeout (settings ``max_linear``, ``max_angular``, ``cmd_timeout``)."""
+    limits (settings ``max_linear``, ``max_angular``). How long a command
+    holds: ``timeout`` s when the plugin itself says (Noetic's planar_move
+    ``cmdTimeout``), else the host's ``cmd_timeout``, else for ever (0), as
+    Gazebo's drive plugins keep the last ``cmd_vel`` until another comes."""
     settings = plugin.engine.settings
+    hold = float(settings.get('cmd_timeout', 0.0)) if timeout is None else timeout
     return VelocityCommand(lambda: plugin.engine.time,
                            max_linear=float(settings.get('max_linear', 2.0)),
                            max_angular=float(settings.get('max_angular', 3.0)),
-                           cmd_timeout=float(settings.get('cmd_timeout', 0.5)))
+                           cmd_timeout=hold)
 
 
 class DriveCore(Plugin):
@@ -83,13 +90,16 @@ class DiffDriveCore(DriveCore):
         try:
             self.drive = DiffDrive(self.model, o.text('leftJoint', 'left_joint'),
                                    o.text('rightJoint', 'right_joint'),
-                                   o.number('wheelSeparation', 0.34, positive=True),
-                                   o.number('wheelDiameter', 0.15, positive=True),
-                                   o.number('wheelTorque', 5.0, positive=True), self.command,
-                                   swapped=release.swaps_wheels(legacy))
-        except ValueError as exc:
-            raise PluginError('%s: %s' % (o.where, exc))
-        self.every = Every(o.number('updateRate', 100.0, minimum=0.0), lambda: self.engine.time)
+                                   o.number('wheelSeparation', 0.34),
+                                   o.number('wheelDiameter', 0.15, nonzero=True),
+                                   o.number('wheelTorque', 5.0, minimum=0.0), self.command,
+                                   swapped=release.swaps_wheels(legacy),
+                                   acceleration=o.number('wheelAcceleration', 0.0))
+        except PluginError:
+            raise
+        except ValueError as exc:   # Gazebo: ROS_FATAL and gzthrow, the plugin does not run
+            raise PluginError("%s: couldn't get wheel hinge joint: %s" % (o.where, exc))
+        self.every = Every(o.number('updateRate', 100.0), lambda: self.engine.time)
         source = o.text('odometrySource', 'world').lower()
         if source not in ODOMETRY_SOURCES:    # Gazebo warns and uses world, as here
             self.engine.log.warn('%s: odometrySource %r is not world or encoder; using world'
@@ -97,10 +107,16 @@ class DiffDriveCore(DriveCore):
             source = 'world'
         self.encoder = None
         if source == 'encoder':
+            if not self.drive.half:     # Gazebo's odometry would divide by it
+                raise PluginError('%s: <wheelSeparation> 0 with odometrySource encoder'
+                                  % o.where)
             self.encoder = EncoderOdometry(self.drive.radius, 2.0 * self.drive.half,
                                            self.drive.swapped,
                                            release.encoder_twist_in_child_frame)
-        # wheels grip; everything else that touches the ground (a caster) slides
+        self._grip()
+
+    def _grip(self):
+        """The wheels grip; everything else that touches the ground (a caster) slides."""
         wheels = {self.model.urdf.joints[j].child for j in self.drive.joints}
         for link in self.model.body.links:
             self.model.set_friction(link, 1.0 if link in wheels else 0.0,
@@ -117,7 +133,7 @@ class DiffDriveCore(DriveCore):
             self.encoder.step(rates[0], rates[1], self.engine.time_step)
         if self.every.due():
             self.on_update()
-            self.drive.apply()
+            self.drive.apply(max(self.every.period, self.engine.time_step))
 
     def on_update(self):
         """At the update rate, before the wheels are set (the ROS plugin publishes)."""
@@ -125,18 +141,57 @@ class DiffDriveCore(DriveCore):
     def reset(self):
         self.command.reset()
         self.every.reset()
+        self.drive.reset()
         if self.encoder is not None:
             self.encoder.reset()
 
 
+class SkidSteerDriveCore(DiffDriveCore):
+    """``libgazebo_ros_skid_steer_drive.so`` without ROS: leftFrontJoint,
+    rightFrontJoint, leftRearJoint, rightRearJoint, wheelSeparation (0.4),
+    wheelDiameter (0.15), torque (5), updateRate (100), as in every release;
+    no legacy mode, no encoder odometry, no wheel acceleration."""
+
+    FILENAMES = ('libgazebo_ros_skid_steer_drive.so',)
+    SIDES = (('leftFrontJoint', 'left_front_joint'), ('rightFrontJoint', 'right_front_joint'),
+             ('leftRearJoint', 'left_rear_joint'), ('rightRearJoint', 'right_rear_joint'))
+
+    def load(self):
+        o = self.options
+        self.command = velocity_command(self)
+        names = [o.text(tag, default) for tag, default in self.SIDES]
+        for (tag, _), name in zip(self.SIDES, names):
+            if not self.model.has_joint(name):      # Gazebo: gzthrow, the plugin does not run
+                raise PluginError('%s: GazeboRosSkidSteerDrive Plugin couldn\'t get %s hinge '
+                                  'joint named "%s"' % (o.where, ' '.join(
+                                      re.findall('[a-z]+|[A-Z][a-z]+', tag)[:2]).lower(), name))
+        self.drive = SkidSteer(self.model, names[0::2], names[1::2],
+                               o.number('wheelSeparation', 0.4),
+                               o.number('wheelDiameter', 0.15, nonzero=True),
+                               o.number('torque', 5.0, minimum=0.0), self.command)
+        self.every = Every(o.number('updateRate', 100.0), lambda: self.engine.time)
+        self.encoder = None
+        self._grip()
+
+    def facts(self):
+        return DriveCore.facts(self)
+
+
 class PlanarMoveCore(DriveCore):
     """``libgazebo_ros_planar_move.so`` without ROS: the command is in the
-    body's frame (x, y, yaw rate), applied every step."""
+    body's frame (x, y, yaw rate), applied every step; it holds until another
+    comes, or for ``cmdTimeout`` s where the release reads it (Noetic, 2.9.2:
+    a negative one, the default, holds for ever)."""
 
     FILENAMES = ('libgazebo_ros_planar_move.so',)
 
     def load(self):
-        self.command = velocity_command(self)
+        timeout = None
+        if self.engine.release.reads_cmd_timeout and self.options.has('cmdTimeout'):
+            given = self.options.number('cmdTimeout', -1.0)
+            # Gazebo drops a command older than it: 0 drops it at the next step
+            timeout = 0.0 if given < 0 else max(given, 1e-9)
+        self.command = velocity_command(self, timeout)
         self.drive = PlanarMove(self.model, self.command, self.engine.bounds,
                                 self.engine.time_step)
         if not self.model.kinematic:
@@ -149,4 +204,5 @@ class PlanarMoveCore(DriveCore):
         self.command.reset()
 
 
-CORES = {name: cls for cls in (DiffDriveCore, PlanarMoveCore) for name in cls.FILENAMES}
+CORES = {name: cls for cls in (DiffDriveCore, SkidSteerDriveCore, PlanarMoveCore)
+         for name in cls.FILENAMES}

@@ -1,8 +1,9 @@
-"""Gazebo's drive plugins with their ROS topics: ``libgazebo_ros_diff_drive.so``
-and ``libgazebo_ros_planar_move.so``, with the options and defaults of
-gazebo_ros_pkgs (what changed between ROS releases: :mod:`..releases`).
-Each subscribes its command topic and publishes odometry and TF at its update
-rate; the driving itself is the ROS-free core (:mod:`.cores`)."""
+"""Gazebo's drive plugins with their ROS topics: ``libgazebo_ros_diff_drive.so``,
+``libgazebo_ros_skid_steer_drive.so`` and ``libgazebo_ros_planar_move.so``,
+with the options and defaults of gazebo_ros_pkgs (what changed between ROS
+releases: :mod:`..releases`). Each subscribes its command topic, keeps the
+last command until another comes (as Gazebo's), and publishes odometry and TF
+at its rate; the driving itself is the ROS-free core (:mod:`.cores`)."""
 import rospy
 from geometry_msgs.msg import TransformStamped
 from sensor_msgs.msg import JointState
@@ -10,7 +11,9 @@ from std_msgs.msg import Header
 from tf2_msgs.msg import TFMessage
 
 from exp_assignment2.geometry import quaternion_from_yaw
-from exp_assignment2.sim.plugins.cores import DiffDriveCore, Every, PlanarMoveCore
+from exp_assignment2.sim.releases import tf_resolve
+from exp_assignment2.sim.plugins.cores import (DiffDriveCore, Every, PlanarMoveCore,
+                                               SkidSteerDriveCore)
 from exp_assignment2.sim.plugins.ros_io import (CommandTopic, OdometryPublisher, joint_claims,
                                                 stamp)
 
@@ -87,15 +90,44 @@ class DiffDrivePlugin(DiffDriveCore):
         joint_claims(self.engine, self.topic('joint_states')).pop(self, None)
 
 
+class SkidSteerDrivePlugin(SkidSteerDriveCore):
+    """``libgazebo_ros_skid_steer_drive.so`` (see :class:`~.cores.SkidSteerDriveCore`)
+    with commandTopic, odometryTopic, odometryFrame, robotBaseFrame and
+    broadcastTF (false): odometry at the update rate, its frames resolved
+    against the ``tf_prefix`` parameter, not the namespace, in every release."""
+
+    def load(self):
+        SkidSteerDriveCore.load(self)
+        o = self.options
+        self.odometry = OdometryPublisher(self.topic(o.text('odometryTopic', 'odom')),
+                                          tf_resolve('', o.text('odometryFrame', 'odom')),
+                                          tf_resolve('', o.text('robotBaseFrame',
+                                                                'base_footprint')),
+                                          tf=o.boolean('broadcastTF', False))
+        self.cmd = CommandTopic(self, self.command_topic(), self.command)
+        rospy.set_param(self.topic('turn_sign'), self.drive.turn_sign())
+
+    def on_update(self):
+        position, quaternion = self.model.pose()
+        linear, angular = self.model.twist()
+        self.odometry.publish(stamp(self.engine), position, quaternion,
+                              (linear[0], linear[1], 0.0), (0.0, 0.0, angular[2]))
+
+    def close(self):
+        self.cmd.close()
+        self.odometry.close()
+
+
 class PlanarMovePlugin(PlanarMoveCore):
     """``libgazebo_ros_planar_move.so`` (see :class:`~.cores.PlanarMoveCore`)
-    with commandTopic, odometryTopic, odometryFrame, odometryRate,
-    robotBaseFrame, publishOdometryTf."""
+    with commandTopic, odometryTopic, odometryFrame, odometryRate (0 or less:
+    no odometry, as Gazebo's), robotBaseFrame, publishOdometryTf."""
 
     def load(self):
         PlanarMoveCore.load(self)
         o = self.options
-        self.every = Every(o.number('odometryRate', 20.0, minimum=0.0), lambda: self.engine.time)
+        rate = o.number('odometryRate', 20.0)
+        self.every = Every(rate, lambda: self.engine.time) if rate > 0 else None
         self.odometry = OdometryPublisher(self.topic(o.text('odometryTopic', 'odom')),
                                           o.text('odometryFrame', 'odom'),
                                           o.text('robotBaseFrame', 'base_footprint'),
@@ -103,14 +135,15 @@ class PlanarMovePlugin(PlanarMoveCore):
         self.cmd = CommandTopic(self, self.command_topic(), self.command)
 
     def after_step(self):
-        if self.every.due():
+        if self.every is not None and self.every.due():
             position, quaternion = self.model.pose()
             linear, angular = self.model.twist()
             self.odometry.publish(stamp(self.engine), position, quaternion, linear, angular)
 
     def reset(self):
         PlanarMoveCore.reset(self)
-        self.every.reset()
+        if self.every is not None:
+            self.every.reset()
 
     def close(self):
         self.cmd.close()
