@@ -32,7 +32,7 @@ def test_gzserver_reads_a_launch_files_command_line(tmp_path):
     assert cmd == gzserver.ServerCommand(str(world), True, True, [],
                                          ['__name:=gazebo', '__log:=/tmp/gazebo-1.log'])
     assert gzserver.simulator_argv(cmd, scripts='/r/lib') == [
-        '/usr/bin/python3', '/r/lib/simulator.py', '__name:=gazebo',
+        '/usr/bin/python3', '/r/lib/simulator.py', '_cmd_timeout:=0', '__name:=gazebo',
         '__log:=/tmp/gazebo-1.log', '_world_file:=%s' % json.dumps(str(world)), '_paused:=true']
 
 
@@ -58,15 +58,27 @@ def test_gzserver_says_what_it_ignores():
     assert not cmd.paused and not cmd.verbose
 
 
+def test_gzserver_ignores_what_gazebo_ignores(tmp_path):
+    """Server::ParseArgs allows unregistered options, and words after the world
+    file are "pass_through" for system plugins."""
+    world = tmp_path / 'arena.world'
+    world.write_text('<sdf/>')
+    cmd = gzserver.translate(['--fast', str(world), 'worlds/empty.world', '-x'])
+    assert cmd.world == str(world)
+    assert cmd.notes == [
+        "gzserver: unknown option '--fast' ignored (as Gazebo ignores options it does not know)",
+        "gzserver: unknown option '-x' ignored (as Gazebo ignores options it does not know)",
+        'gzserver: worlds/empty.world after the world file ignored (Gazebo passes them through '
+        'to system plugins)']
+
+
 @pytest.mark.parametrize('argv,message', [
-    (['--fast'], "gzserver: unknown option '--fast'"),
     (['-e', 'physx'], "gzserver: unknown physics engine 'physx'; accepted: ode, bullet, "
                       "simbody, dart"),
     (['-e'], 'gzserver: -e needs a value'),
     (['/no/such.world'], "gzserver: world file '/no/such.world' not found (nor under "
                          "GAZEBO_RESOURCE_PATH='')"),
     (['-p', 'state.log'], 'gzserver: -p (playing a Gazebo log) is not supported'),
-    (['worlds/empty.world', 'worlds/empty.world'], 'gzserver: one world file, not 2'),
 ])
 def test_gzserver_refuses_what_it_cannot_run(argv, message):
     with pytest.raises(gzserver.UsageError) as err:
@@ -110,20 +122,32 @@ def test_spawn_model_every_option():
     ('-urdf -param p', 'spawn_model: -model NAME is required'),
     ('-urdf -sdf -model a -param p', 'spawn_model: -urdf and -sdf cannot both be given'),
     ('-urdf -model a -file f -param p', 'spawn_model: -file and -param cannot both be given'),
-    ('-urdf -model a -param p -x 1 -x 2', 'spawn_model: -x given twice'),
     ('-urdf -model a -param p -x nan', "spawn_model: -x must be a finite number, not 'nan'"),
     ('-urdf -model a -param p -Y east', "spawn_model: -Y must be a finite number, not 'east'"),
     ('-urdf -model a -param p -J j inf', "spawn_model: -J j must be a finite number, not 'inf'"),
     ('-urdf -model a -param p -J j', 'spawn_model: -J j needs a value'),
     ('-urdf -model a -param', 'spawn_model: -param needs a value'),
     ('-urdf -model a -param p -timeout -1', 'spawn_model: -timeout must be positive, not -1'),
-    ('-urdf -model a -param p -xyz 1', "spawn_model: unknown argument '-xyz'"),
+    ('-urdf -model a -param p -xyz 1', "spawn_model: unknown argument '-xyz' (spawn_model of "
+                                       "ROS noetic refuses it: unrecognized arguments)"),
     ('-urdf -model a -param p extra', "spawn_model: unknown argument 'extra'"),
 ])
 def test_spawn_model_refuses_bad_command_lines(argv, message):
     with pytest.raises(spawn_args.UsageError) as err:
         spawn_args.parse(argv.split())
     assert str(err.value).startswith(message)
+
+
+def test_spawn_model_reads_as_each_release_did():
+    """An option given twice takes its last value in every release; Kinetic's
+    spawn_model ignored what it did not know, Melodic's argparse refuses it."""
+    argv = '-urdf -model a -param p -x 1 -x 2 -model b -urdf -timeout_s 3'.split()
+    o = spawn_args.parse(argv, 'kinetic')
+    assert (o.pose[0], o.model, o.ignored) == (2.0, 'b', ['-timeout_s', '3'])
+    with pytest.raises(spawn_args.UsageError, match="unknown argument '-timeout_s' "
+                                                    r"\(spawn_model of ROS melodic"):
+        spawn_args.parse(argv, 'melodic')
+    assert spawn_args.parse(argv[:-2], 'noetic').pose[0] == 2.0
 
 
 def test_spawn_model_quaternion_is_tfs_quaternion_from_euler():
@@ -161,6 +185,9 @@ def test_spawner_reads_the_courses_command_line():
     assert (o.stopped, o.wait_for, o.timeout, o.shutdown_timeout) == (True, 'calibrated', None,
                                                                       2.0)
     assert spawner_args.parse(['--timeout=5', 'a']).timeout == 5.0
+    # argparse takes a unique prefix of a long option
+    o = spawner_args.parse(['--name=/robot', '--stop', '--shutdown', '3', 'a'])
+    assert (o.namespace, o.stopped, o.shutdown_timeout) == ('/robot', True, 3.0)
 
 
 @pytest.mark.parametrize('argv,message', [

@@ -2,14 +2,19 @@
 turned into this package's simulator's (no rospy here).
 
 A launch file runs ``gzserver [-u] [-r] [--verbose] -e ode [extra args]
-WORLD __name:=gazebo __log:=...``. :func:`translate` reads that: ``-u`` starts
-paused, the world file is resolved as Gazebo resolves it (a path, or a name on
-``GAZEBO_RESOURCE_PATH``; ``worlds/empty.world`` is the empty world), options
-the simulator has no use for are accepted with one line saying so, unknown
-ones are refused. ROS arguments (``name:=value``) pass through, so the node
-is named as the launch file says. :func:`main` then replaces this process
-with ``/usr/bin/python3 scripts/simulator.py`` given ``_world_file`` and
-``_paused``.
+WORLD __name:=gazebo __log:=...``. :func:`translate` reads that as Gazebo's
+Server::ParseArgs does: ``-u`` starts paused, the first other word is the
+world file, resolved as Gazebo resolves it (a path, or a name on
+``GAZEBO_RESOURCE_PATH``; ``worlds/empty.world`` is the empty world), and the
+words after it are passed through to system plugins (ignored); options the
+simulator has no use for are accepted with one line saying so, and so are
+options Gazebo does not know (its parser allows unregistered ones). A world
+that cannot be found, an unknown physics engine and a missing value are
+refused, as gzserver exits on them. ROS arguments (``name:=value``) pass
+through, so the node is named as the launch file says. :func:`main` then
+replaces this process with ``/usr/bin/python3 scripts/simulator.py`` given
+``_world_file``, ``_paused`` and ``_cmd_timeout:=0``: Gazebo's drive plugins
+keep the last velocity command until another comes.
 """
 import json
 import os
@@ -84,12 +89,13 @@ def translate(argv, environ=None):
             raise UsageError('gzserver: %s (playing a Gazebo log) is not supported; '
                              'replay a rosbag instead' % option)
         elif arg.startswith('-') and arg != '-':
-            raise UsageError('gzserver: unknown option %r\n%s' % (arg, USAGE))
+            notes.append('gzserver: unknown option %r ignored (as Gazebo ignores options it '
+                         'does not know)' % arg)
         else:
             worlds.append(arg)
-    if len(worlds) > 1:
-        raise UsageError('gzserver: one world file, not %d: %s' % (len(worlds),
-                                                                   ' '.join(worlds)))
+    if len(worlds) > 1:         # Gazebo's "pass_through" words, for system plugins
+        notes.append('gzserver: %s after the world file ignored (Gazebo passes them '
+                     'through to system plugins)' % ' '.join(worlds[1:]))
     world = resolve_world(worlds[0], environ) if worlds else None
     return ServerCommand(world, paused, verbose, notes, ros_args)
 
@@ -120,7 +126,10 @@ def resolve_world(name, environ):
 def simulator_argv(command, scripts=SCRIPTS):
     """The simulator's command line for a :class:`ServerCommand` (``scripts``:
     the folder of this package's executables, in its source tree or installed)."""
-    argv = [PYTHON, os.path.join(scripts, 'simulator.py')] + list(command.ros_args)
+    # Gazebo's diff drive, skid steer and planar move hold the last command:
+    # no hold of the package's own (a launch file's own _cmd_timeout still wins)
+    argv = [PYTHON, os.path.join(scripts, 'simulator.py'), '_cmd_timeout:=0']
+    argv += list(command.ros_args)
     # the value is read as YAML: a JSON string is a YAML string, whatever the path holds
     argv.append('_world_file:=%s' % json.dumps(command.world or ''))
     if command.paused:

@@ -3,8 +3,12 @@
 ``spawn_model -urdf|-sdf -param P|-file F|-database NAME|-stdin -model NAME
 [-x X -y Y -z Z -R R -P P -Y Y] [-J JOINT VALUE]... [-reference_frame F]
 [-robot_namespace NS] [-gazebo_namespace NS] [-unpause] [-wait MODEL]
-[-timeout S] [-package_to_model] [-b]``, as Gazebo's; numbers must be
-finite, and anything else is refused with a line that says what is accepted.
+[-timeout S] [-package_to_model] [-b]``, as Gazebo's: an option given twice
+takes its last value (Kinetic's loop and Melodic's argparse alike); an
+argument spawn_model does not know is ignored as Kinetic's ignored it, and
+refused as Melodic's and Noetic's argparse refuses it (``release``); two
+formats or two sources are refused in every release. ``-timeout`` is this
+package's own. Numbers must be finite (a NaN pose would break the world).
 Also the pose's quaternion and the model XML helpers the node needs.
 """
 import math
@@ -26,22 +30,23 @@ DATABASE_TEMPLATE = ('<sdf version="1.4"><world name="default"><include><uri>mod
 
 SpawnOptions = namedtuple('SpawnOptions', 'format source source_value model pose joints '
                           'reference_frame robot_namespace gazebo_namespace unpause wait '
-                          'timeout package_to_model bond')
+                          'timeout package_to_model bond ignored')
 SpawnOptions.__doc__ = """A spawn_model command line: format ('urdf' or 'sdf'),
 source ('file', 'param', 'database', 'stdin') and its value, model name,
 pose (x, y, z, roll, pitch, yaw), joints [(name, position)], reference
 frame, robot namespace (None: the node's), Gazebo's namespace, unpause, wait
-(a model name or None), timeout (s), package_to_model, bond."""
+(a model name or None), timeout (s), package_to_model, bond, and the arguments ignored (Kinetic's)."""
 
 
 class UsageError(ValueError):
     """A command line spawn_model refuses; the message says why and what is accepted."""
 
 
-def parse(argv):
-    """Read spawn_model's arguments (ROS remappings already removed)."""
+def parse(argv, release='noetic'):
+    """Read spawn_model's arguments (ROS remappings already removed) as the
+    spawn_model of ``release`` (a ROS release's name) reads them."""
     given = {}      # what -> (option, value); what: format, source, or the option itself
-    pose, joints = {}, []
+    pose, joints, ignored = {}, [], []
     args = list(argv)
     while args:
         arg = args.pop(0)
@@ -50,19 +55,22 @@ def parse(argv):
         elif arg in SOURCES:
             _once(given, 'source', arg, None if arg == '-stdin' else _text(args, arg))
         elif arg in FLAGS:
-            _once(given, arg, arg, True)
+            given[arg] = (arg, True)
         elif arg in TEXT_OPTIONS:
-            _once(given, arg, arg, _text(args, arg))
+            given[arg] = (arg, _text(args, arg))
         elif arg in NUMBER_OPTIONS:
             value = _number(arg, _text(args, arg))
             if arg == '-timeout' and value <= 0:
                 raise UsageError('spawn_model: -timeout must be positive, not %g' % value)
-            _once(given if arg == '-timeout' else pose, arg, arg, value)
+            (given if arg == '-timeout' else pose)[arg] = (arg, value)
         elif arg == '-J':
             name = _text(args, arg)
             joints.append((name, _number('-J %s' % name, _text(args, '-J ' + name))))
+        elif release == 'kinetic':      # its loop looks for what it knows, and no more
+            ignored.append(arg)
         else:
-            raise UsageError('spawn_model: unknown argument %r\n%s' % (arg, USAGE))
+            raise UsageError('spawn_model: unknown argument %r (spawn_model of ROS %s refuses it: '
+                             'unrecognized arguments)\n%s' % (arg, release, USAGE))
     for what, needed in (('format', '-urdf or -sdf'),
                          ('source', '-file, -param, -database or -stdin'),
                          ('-model', '-model NAME')):
@@ -77,15 +85,15 @@ def parse(argv):
         joints, value('-reference_frame', ''), value('-robot_namespace'),
         value('-gazebo_namespace', '/gazebo').rstrip('/') or '/gazebo',
         value('-unpause', False), value('-wait'), value('-timeout', DEFAULT_TIMEOUT),
-        value('-package_to_model', False), value('-b', False))
+        value('-package_to_model', False), value('-b', False), ignored)
 
 
 def _once(given, what, option, value):
-    if what in given:
-        first = given[what][0]
-        raise UsageError('spawn_model: %s' % ('%s given twice' % option if first == option
-                                              else '%s and %s cannot both be given'
-                                              % (first, option)))
+    """A format or a source: the same one again takes the last value; two
+    different ones are refused, as every release's spawn_model refuses them."""
+    if what in given and given[what][0] != option:
+        raise UsageError('spawn_model: %s and %s cannot both be given'
+                         % (given[what][0], option))
     given[what] = (option, value)
 
 

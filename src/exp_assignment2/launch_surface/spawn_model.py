@@ -21,6 +21,7 @@ from std_srvs.srv import Empty
 
 from exp_assignment2.launch_surface import spawn_args
 from exp_assignment2.launch_surface.stopping import Stop
+from exp_assignment2.sim import releases
 
 
 class SpawnModelNode(object):
@@ -148,6 +149,15 @@ class SpawnModelNode(object):
             rospy.logerr('Delete model service call failed: %s', exc)
 
 
+def release_name():
+    """The ROS release the simulator follows (EXP2_ROS_RELEASE), whose spawn_model
+    reads the command line; a bad value is the simulator's to refuse."""
+    try:
+        return releases.choose().name
+    except releases.ReleaseError:
+        return releases.DEFAULT
+
+
 def main(argv=None):
     """The spawn_model executable: exit status as described above."""
     argv = rospy.myargv(sys.argv if argv is None else argv)[1:]
@@ -155,10 +165,13 @@ def main(argv=None):
         print(spawn_args.USAGE)
         return 0
     try:
-        options = spawn_args.parse(argv)
+        options = spawn_args.parse(argv, release_name())
     except spawn_args.UsageError as exc:
         print(str(exc), file=sys.stderr)
         return 2
+    if options.ignored:
+        print('spawn_model: %s ignored (as the spawn_model of ROS kinetic ignored them)'
+              % ' '.join(options.ignored), flush=True)
     stop = Stop()
     rospy.init_node('spawn_model', anonymous=True, disable_signals=True)
     status = SpawnModelNode(options, stop).run()

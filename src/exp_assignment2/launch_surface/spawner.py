@@ -3,14 +3,18 @@ simulator, and take them down when it is stopped.
 
 The controllers are the ones the parameter server describes under the
 controller manager's namespace (``<ns>/<name>/type``, ``joint``, ``pid``),
-as loaded from the user's YAML. It waits for ``<ns>/controller_manager``'s
+as loaded from the user's YAML (or from a YAML file named in place of a
+controller, whose top-level keys it loads, as the real spawner). It waits for ``<ns>/controller_manager``'s
 services (``--timeout``), loads each controller, starts the loaded ones with
 one strict switch (unless ``--stopped``), and stays up; stopped by roslaunch
 (SIGINT or SIGTERM, :mod:`.stopping`: also while it is still starting them)
 it stops and unloads them within ``--shutdown-timeout``.
 """
+import os
 import sys
 import threading
+
+import yaml
 
 import rospy
 from controller_manager_msgs.srv import LoadController, SwitchController, UnloadController
@@ -68,7 +72,7 @@ class Spawner(object):
             return False
         if not self.wait_for_services():
             return False
-        for name in self.options.controllers:
+        for name in controller_names(self.options.controllers):
             rospy.loginfo('Loading controller: %s', name)
             try:
                 ok = self.load(name).ok
@@ -124,6 +128,23 @@ class Spawner(object):
                 self.unload(name)
         except (rospy.ServiceException, rospy.ROSException) as exc:
             rospy.logwarn('Controller Spawner error while taking down controllers: %s', exc)
+
+
+def controller_names(names):
+    """The controllers to load: a name that is a YAML file is loaded into the
+    node's namespace and stands for its top-level keys, as the real spawner
+    (``rosparam.set_param("", open(name))``) reads it."""
+    out = []
+    for name in names:
+        if not os.path.isfile(name):
+            out.append(name)
+            continue
+        with open(name) as f:
+            data = yaml.safe_load(f) or {}
+        for key, value in data.items():
+            rospy.set_param(key, value)
+            out.append(key)
+    return out
 
 
 def main(argv=None):

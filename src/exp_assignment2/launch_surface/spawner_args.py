@@ -1,9 +1,10 @@
 """controller_manager's ``spawner`` command line, read without ROS.
 
 ``spawner [--namespace NS] [--stopped] [--wait-for TOPIC] [--timeout S |
---no-timeout] [--shutdown-timeout S] CONTROLLER...``, options anywhere and
-as ``--option=value`` too, as the real spawner's argparse reads them.
-Anything else is refused with a line that says what is accepted.
+--no-timeout] [--shutdown-timeout S] CONTROLLER...``, options anywhere, as
+``--option=value`` too and shortened to any unique prefix (``--ns``,
+``--stop``), as the real spawner's argparse reads them. Anything else is
+refused with a line that says what is accepted, as argparse refuses it.
 """
 import math
 from collections import namedtuple
@@ -31,6 +32,7 @@ def parse(argv):
     while args:
         arg = args.pop(0)
         option, equals, inline = arg.partition('=')
+        option = _unabbreviated(option)
         if option in ('--stopped', '--no-timeout'):
             if equals:
                 raise UsageError('spawner: %s takes no value\n%s' % (option, USAGE))
@@ -52,6 +54,19 @@ def parse(argv):
     return SpawnerOptions(controllers, given.get('--namespace', ''), bool(
         given.get('--stopped')), given.get('--wait-for'), timeout, _seconds(
         '--shutdown-timeout', given.get('--shutdown-timeout'), DEFAULT_SHUTDOWN_TIMEOUT))
+
+
+OPTIONS = ('--stopped', '--no-timeout', '--namespace', '--wait-for', '--timeout',
+           '--shutdown-timeout')
+
+
+def _unabbreviated(option):
+    """argparse's reading of a long option's unique prefix (``--ns``: none,
+    ``--name``: --namespace); ambiguous or unknown ones stay as given."""
+    if not option.startswith('--') or option in OPTIONS:
+        return option
+    matches = [o for o in OPTIONS if o.startswith(option)]
+    return matches[0] if len(matches) == 1 else option
 
 
 def _seconds(option, text, default):
