@@ -1,7 +1,8 @@
 """What Gazebo 11 loads, the SDF reader loads (exp_assignment2.sim.sdf), no ROS:
 a static model's inertial is not checked, a massless link on a fixed joint is
 kept with one warning, a mesh of an unknown model gets the default box with one
-line; what would break the world stays refused.
+line; a heightmap, a model without a link and a ball joint load with a line
+saying what is not simulated; what would break the world stays refused.
 
 test/data/worlds/saved_shelter.world is a world as Gazebo saves one: a static,
 visual-only model of mass 0 whose mesh belongs to a model this package does
@@ -130,3 +131,28 @@ def test_an_unknown_mesh_is_a_box_of_the_size_its_link_collisions_declare():
     rpy = [float(v) for v in visual.find('origin').get('rpy').split()]
     assert xyz == pytest.approx([0.3, 0, 1]) and rpy == pytest.approx([0, 0, 0], abs=1e-9)
     assert [c.get('name') for c in shed.findall('link/collision')] == ['walls', 'post']
+
+
+def test_what_gazebo_builds_and_the_simulator_does_not_is_left_out_with_a_line():
+    text = world(box_model('ground', '<heightmap><uri>x.png</uri></heightmap>') +
+                 "<model name='anchor'><static>1</static></model>" + box_model('m'))
+    w = read_world(text, model_path=[])
+    assert [m.name for m in w.models] == ['ground', 'm']
+    assert w.notes == [
+        'world/model[ground]/link[link]/visual[visual]/geometry: a <heightmap> is not simulated '
+        'here: left out',
+        'world/model[ground]/link[link]/collision[collision]/geometry: a <heightmap> is not '
+        'simulated here: left out',
+        'world/model[anchor]: no <link>: an empty model, skipped']
+    assert _models(w)['ground'].find('link/visual') is None
+
+
+def test_a_ball_joint_is_held_fixed_with_a_warning_and_an_empty_spawn_is_refused():
+    notes = []
+    urdf = model_to_urdf(ARM.replace("type='revolute'", "type='ball'"), notes=notes)
+    assert ET.fromstring(urdf).find("joint[@name='shoulder']").get('type') == 'fixed'
+    assert notes == ['model[arm]/joint[shoulder]: a ball joint, which Gazebo moves, is held '
+                     'fixed here']
+    with pytest.raises(SdfError) as err:
+        model_to_urdf("<sdf version='1.6'><model name='e'><static>1</static></model></sdf>")
+    assert str(err.value) == 'model[e]: the model has no <link> (Gazebo would spawn it empty)'

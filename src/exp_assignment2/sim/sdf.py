@@ -99,6 +99,9 @@ def read_world(path_or_text, sizes=None, model_path=None):
                 skipped.append('world/%s[%s]: %s are not simulated here: skipped' % (
                     child.tag, child.get('name', ''), NOT_SIMULATED[child.tag]))
             continue
+        if not model.links:     # Gazebo holds an empty model; nothing of it to simulate
+            skipped.append('world/model[%s]: no <link>: an empty model, skipped' % model.name)
+            continue
         if model.name in names:
             raise SdfError('world/model[%s]: two models are called %r' % (model.name,
                                                                           model.name))
@@ -146,6 +149,9 @@ def model_to_urdf(sdf_text, name=None, sizes=None, model_path=None, notes=None):
             raise SdfError('sdf: the include is a light, not a model')
     if name:
         model.name = name
+    if not model.links:
+        raise SdfError('model[%s]: the model has no <link> (Gazebo would spawn it empty)'
+                       % model.name)
     urdf = model_urdf(model)
     if notes is not None:
         notes.extend(context.notes() + model.warnings)

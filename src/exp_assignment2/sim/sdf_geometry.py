@@ -132,6 +132,10 @@ def declared_box(link, where, context):
     return centre, [float(v) for v in high - low]
 
 
+# SDF shapes Gazebo builds and the simulator does not
+UNDRAWN = ('heightmap', 'polyline', 'image')
+
+
 def shapes_of(geometry_parent, where, context, part='visual', declared=None):
     """The ``<geometry>`` of a visual or collision (``part``) as [(4x4 offset,
     (kind, params), rgba)]: what URDF shapes stand for it, placed in the
@@ -162,6 +166,9 @@ def shapes_of(geometry_parent, where, context, part='visual', declared=None):
         return [_plane(shape, where + '/plane')]
     if kind == 'mesh':
         return _mesh(shape, where + '/mesh', context, part, declared)
+    if kind in UNDRAWN:     # Gazebo builds them; here the element is left out, said once
+        context.left_out('%s: a <%s> is not simulated here: left out' % (where, kind))
+        return []
     raise SdfError('%s: unknown shape <%s>; accepted: box, cylinder, sphere, plane, mesh'
                    % (where, kind))
 

@@ -14,6 +14,8 @@ from exp_assignment2.sim.sdf_geometry import (DEFAULT_RGBA, SdfError, child_floa
                                               declared_box, floats, pose_of, shapes_of)
 
 JOINT_TYPES = ('revolute', 'continuous', 'prismatic', 'fixed')
+# SDF joints Gazebo moves and a URDF cannot say: held fixed here, one warning each
+HELD_FIXED = ('ball', 'universal', 'revolute2', 'screw', 'gearbox')
 NO_LIMIT = 1e15             # SDF's default limits are +-1e16: no limit
 DEFAULT_EFFORT, DEFAULT_VELOCITY = 1000.0, 100.0    # where SDF gives none (it says -1)
 
@@ -59,16 +61,19 @@ def read_model(elem, where, context):
                 raise SdfError('%s: two links are called %r' % (where, link.name))
             model.links[link.name] = link
         elif child.tag == 'joint':
-            model.joints.append(_read_joint(child, '%s/joint[%s]' % (where, child.get('name', ''))))
+            joint = _read_joint(child, '%s/joint[%s]' % (where, child.get('name', '')))
+            if joint['type'] in HELD_FIXED:
+                model.warnings.append('%s: a %s joint, which Gazebo moves, is held fixed here'
+                                      % (joint['where'], joint['type']))
+                joint['type'] = 'fixed'
+            model.joints.append(joint)
         elif child.tag == 'plugin':
             model.plugins.append(child)
         elif child.tag in ('model', 'include'):
             nested = (read_model(child, '%s/model[%s]' % (where, child.get('name', '')), context)
                       if child.tag == 'model' else context.include(child, where))
             _merge(model, nested)
-    if not model.links:
-        raise SdfError('%s: the model has no <link>' % where)
-    return model
+    return model        # without a link it is Gazebo's empty model: the caller decides
 
 
 def _merge(model, nested):
@@ -131,9 +136,9 @@ def _read_link(elem, where, context):
 
 def _read_joint(elem, where):
     kind = elem.get('type', '')
-    if kind not in JOINT_TYPES:
-        raise SdfError('%s: joint type %r is not supported; accepted: %s'
-                       % (where, kind, ', '.join(JOINT_TYPES)))
+    if kind not in JOINT_TYPES + HELD_FIXED:
+        raise SdfError('%s: joint type %r is not an SDF joint type; accepted: %s'
+                       % (where, kind, ', '.join(JOINT_TYPES + HELD_FIXED)))
     parent, child = elem.findtext('parent', '').strip(), elem.findtext('child', '').strip()
     if not parent or not child:
         raise SdfError('%s: a joint needs a <parent> and a <child>' % where)

@@ -73,6 +73,7 @@ class Sources(object):
         self.model_path, self.base_dir = list(model_path), base_dir
         self.used = OrderedDict()        # uri -> [entry, installed, model names]
         self.model, self.depth = '', 0
+        self.skipped = []                # lines: what Gazebo builds and this does not
 
     def find_model_dir(self, name):
         for root in self.model_path:
@@ -184,8 +185,13 @@ class Sources(object):
         model.links['link'] = link
         return model
 
+    def left_out(self, line):
+        """Something Gazebo builds that is left out here, said in the notes."""
+        self.skipped.append(line)
+
     def notes(self):
-        """One line per stand-in: which mesh, which box, in which models."""
+        """One line per stand-in: which mesh, which box, in which models; then
+        one per thing left out."""
         lines = []
         for (uri, _), (entry, installed, models) in self.used.items():
             named = ', '.join(models[:3]) + (', ...' if len(models) > 3 else '')
@@ -198,7 +204,7 @@ class Sources(object):
                 "the size its link's box, cylinder and sphere collisions declare; seen, its "
                 "link's collisions collide" if entry.get('declared') else SIZES_NAME,
                 len(models), '' if len(models) == 1 else 's', named))
-        return lines
+        return lines + self.skipped
 
 
 def _model_name(uri):
