@@ -147,6 +147,17 @@ def test_what_gazebo_builds_and_the_simulator_does_not_is_left_out_with_a_line()
     assert _models(w)['ground'].find('link/visual') is None
 
 
+def test_an_include_sdformat_cannot_find_is_left_out_and_the_world_loads():
+    w = read_world(world("<include><uri>model://no_such_thing</uri></include><include/>" +
+                         box_model('m')), model_path=[])
+    assert [m.name for m in w.models] == ['m']
+    assert w.notes == [
+        "world/include[model://no_such_thing]: Unable to find uri[model://no_such_thing]: model "
+        "'no_such_thing' is not installed (GAZEBO_MODEL_PATH) and has no known size in "
+        "config/gazebo_model_sizes.yaml; left out, as sdformat leaves it out",
+        "world/include[]: <include> element missing 'uri' attribute (sdformat skips it)"]
+
+
 def test_a_ball_joint_is_held_fixed_with_a_warning_and_an_empty_spawn_is_refused():
     notes = []
     urdf = model_to_urdf(ARM.replace("type='revolute'", "type='ball'"), notes=notes)

@@ -146,7 +146,8 @@ def model_to_urdf(sdf_text, name=None, sizes=None, model_path=None, notes=None):
     else:
         model = context.include(elem, 'world')
         if model is None:
-            raise SdfError('sdf: the include is a light, not a model')
+            raise SdfError('; '.join(context.skipped) or 'sdf: the include is a light, not a '
+                           'model')
     if name:
         model.name = name
     if not model.links:

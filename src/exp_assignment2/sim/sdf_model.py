@@ -72,7 +72,8 @@ def read_model(elem, where, context):
         elif child.tag in ('model', 'include'):
             nested = (read_model(child, '%s/model[%s]' % (where, child.get('name', '')), context)
                       if child.tag == 'model' else context.include(child, where))
-            _merge(model, nested)
+            if nested is not None:
+                _merge(model, nested)
     return model        # without a link it is Gazebo's empty model: the caller decides
 
 

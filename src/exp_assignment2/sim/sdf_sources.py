@@ -112,11 +112,15 @@ class Sources(object):
         return entry
 
     def include(self, elem, where):
-        """The model an ``<include>`` brings in (None for a light such as the sun)."""
+        """The model an ``<include>`` brings in: None for a light (the sun), and
+        for what sdformat skips with an error (no ``<uri>``, a model it cannot
+        find), which is said in the notes, as the world loads without it."""
         uri = elem.findtext('uri', '').strip()
         where = '%s/include[%s]' % (where, uri)
         if not uri:
-            raise SdfError('%s: an include needs a <uri>' % where)
+            self.left_out("%s: <include> element missing 'uri' attribute (sdformat skips it)"
+                          % where)
+            return None
         if self.depth >= MAX_INCLUDE_DEPTH:
             raise SdfError('%s: includes nested deeper than %d (a loop?)'
                            % (where, MAX_INCLUDE_DEPTH))
@@ -133,10 +137,11 @@ class Sources(object):
                                    self)
             elif name in self.sizes:
                 model = self._box_model(name, uri)
-            else:
-                raise SdfError('%s: model %r is not installed (GAZEBO_MODEL_PATH) and has no '
-                               'known size in %s' % (where, name or uri,
-                                                     SIZES_NAME))
+            else:       # sdformat: "Unable to find uri[...]", and the world loads without it
+                self.left_out('%s: Unable to find uri[%s]: model %r is not installed '
+                              '(GAZEBO_MODEL_PATH) and has no known size in %s; left out, as '
+                              'sdformat leaves it out' % (where, uri, name or uri, SIZES_NAME))
+                return None
         finally:
             self.depth -= 1
         model.name = elem.findtext('name', '').strip() or model.name
