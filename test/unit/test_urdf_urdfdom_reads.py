@@ -166,6 +166,17 @@ def test_a_mesh_whose_file_is_missing_is_left_out_with_gazebo_line(engine, tmp_p
         'for it; left out here too' % path]
 
 
+def test_a_mesh_pybullet_cannot_read_is_left_out_not_the_robot(engine, tmp_path):
+    (tmp_path / 'head.ply').write_text('ply\n')
+    child = '<visual><geometry><mesh filename="head.ply"/></geometry></visual>'
+    model = engine.spawn('r', robot(child=child), base_dir=str(tmp_path))
+    assert model.urdf.links['head'].visuals == []
+    assert lines(engine, 'error') == [
+        'model r: link head visual: a .ply mesh (%s) is not read here (STL, OBJ and COLLADA '
+        'are): left out; Gazebo draws it if it reads the format, else logs "Invalid mesh '
+        'filename extension"' % (tmp_path / 'head.ply')]
+
+
 @pytest.mark.parametrize('text,message', [
     ('<robot name="r"><link name="a">', 'not a valid URDF: no element found: line 1, column 31'),
     ('<sdf version="1.6"/>', 'not a URDF: the root element is <sdf>, not <robot>'),

@@ -18,7 +18,8 @@ Kinetic, 1.0 of Melodic and Noetic). So:
 
 And Gazebo (common::MeshManager) logs ``Unable to find file[F]`` for a mesh
 whose file does not exist, and draws or collides nothing for it: such a
-visual or collision is left out here too.
+visual or collision is left out here too, as is a mesh in a format pybullet
+does not read (it would refuse the robot for it).
 
 :func:`read` returns the :class:`~.urdf_elements.Link` and the error lines,
 and removes from the element what is left out, so the text pybullet loads
@@ -33,6 +34,7 @@ from exp_assignment2.sim.urdf_elements import (DEFAULT_RGBA, BreaksTheWorld, Lin
                                                material_colour, origin_matrix)
 
 INERTIA = ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz')
+MESH_EXTENSIONS = ('.stl', '.obj', '.dae')     # what pybullet's URDF importer reads
 
 
 def read(elem, materials, gazebo_colour, base_dir):
@@ -72,15 +74,30 @@ def read(elem, materials, gazebo_colour, base_dir):
                 break
             if error:
                 lines.append(error)
-            if shape == 'mesh' and not os.path.exists(params['filename']):
+            unread = shape == 'mesh' and _unread(params['filename'], kind, where)
+            if unread:
                 elem.remove(child)
-                lines.append("%s: Unable to find file[%s]: Gazebo %s nothing for it; left out "
-                             "here too" % (where, params['filename'],
-                                           'draws' if kind == 'visual' else 'collides with'))
+                lines.append(unread)
                 continue
             colour = gazebo_colour if gazebo_colour is not None else rgba or DEFAULT_RGBA
             shapes[kind].append(Visual(origin, shape, params, tuple(colour)))
     return Link(name, shapes['visual'], shapes['collision'], mass), lines
+
+
+def _unread(path, kind, where):
+    """The line for a mesh that is not built (a missing file: Gazebo's
+    MeshManager says so and builds nothing; a format pybullet refuses the
+    whole robot for), else None."""
+    what = 'draws' if kind == 'visual' else 'collides with'
+    if not os.path.exists(path):
+        return ('%s: Unable to find file[%s]: Gazebo %s nothing for it; left out here too'
+                % (where, path, what))
+    extension = os.path.splitext(path)[1].lower()
+    if extension not in MESH_EXTENSIONS:
+        return ('%s: a %s mesh (%s) is not read here (STL, OBJ and COLLADA are): left out; '
+                'Gazebo %s it if it reads the format, else logs "Invalid mesh filename '
+                'extension"' % (where, extension or 'nameless', path, what))
+    return None
 
 
 def _colour(visual, materials, where):
