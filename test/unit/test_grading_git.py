@@ -1,7 +1,8 @@
 """A git repository of the submissions folder is read in plain Python
-(grading/plan/git_objects.py, git_packs.py, git_entries.py): its commit's tree
-as ``git archive`` gives it, loose or packed (deltas, index versions 1 and
-2), and nothing of its configuration or hooks ever run."""
+with dulwich under the grader's rules (grading/plan/git_objects.py,
+git_packs.py, git_entries.py): its commit's tree as ``git archive`` gives it,
+loose or packed (deltas, index versions 1 and 2), and nothing of its
+configuration or hooks ever run (the bounds: test_grading_git_reading.py)."""
 import io
 import os
 import subprocess
@@ -13,7 +14,6 @@ from git_helpers import commit, git, make_hostile, make_repository, write
 from exp_assignment2.grading.plan import git_entries
 from exp_assignment2.grading.plan.copies import Copies
 from exp_assignment2.grading.plan.git_objects import GitError, Repository
-from exp_assignment2.grading.plan.git_packs import apply_delta
 from exp_assignment2.grading.plan.submissions import Submission, discover, unpack
 from exp_assignment2.grading.plan.unpacking import SubmissionError
 from exp_assignment2.grading.run import tasks
@@ -103,17 +103,6 @@ def test_an_index_of_version_1(repo, tmp_path):
     git(path, 'prune-packed')
     got = files_of(exported(path, hashes[0], str(tmp_path / 'v1')).dest)
     assert b'VERSION = 1\n' in got['scripts/node.py'][0]
-
-
-def test_deltas_copy_and_insert():
-    base = b'0123456789' * 10
-    # source 100, target 15: copy 10 bytes at offset 5, insert 'abcde'
-    delta = bytes([100, 15, 0x80 | 0x01 | 0x10, 5, 10, 5]) + b'abcde'
-    assert apply_delta(base, delta) == b'5678901234abcde'
-    with pytest.raises(GitError):
-        apply_delta(base, bytes([100, 15, 0x80 | 0x01 | 0x10, 95, 10]))    # past the base
-    with pytest.raises(GitError):
-        apply_delta(base, bytes([99, 1, 1]) + b'x')                        # another base
 
 
 def test_nothing_of_a_hostile_repository_runs(repo, tmp_path):

@@ -3,7 +3,8 @@
 GitHub Classroom clones a folder of repositories; an entry of the folder with
 a ``.git`` folder is graded at a commit, its tree taken as ``git archive``
 would, without a checkout: no hook, no filter, nothing of its configuration
-(:mod:`~exp_assignment2.grading.plan.git_objects` reads the objects). Which
+(:mod:`~exp_assignment2.grading.plan.git_objects` reads the objects with
+dulwich). Which
 commit (:func:`choose`), in this order:
 
 1. grading.yaml's ``submissions: NAME: commit: HASH`` (a hash, tag or branch)
@@ -20,9 +21,10 @@ time of the push is GitHub's to tell. The facts chosen (:func:`choose`'s
 dict: the commit, its date and subject, the commits after it not graded, the
 deadline, late days and points) travel with every run and are on its pages.
 """
-import hashlib
 import os
 import stat
+
+from dulwich.objects import Blob
 
 from exp_assignment2.grading.plan import deadlines
 from exp_assignment2.grading.plan.git_objects import GitError, Repository
@@ -192,9 +194,9 @@ def _write_tree(repo, tree, dest, rel, budget, links, out, count):
         elif mode == MODULE:
             out.leave_out(here, 'a submodule (another repository, not in this one)')
         elif mode == LINK:
-            links.append((path, repo.read(sha)[1].decode('utf-8', 'replace'), here))
+            links.append((path, repo.blob(sha).decode('utf-8', 'replace'), here))
         elif stat.S_ISREG(mode):
-            data = repo.read(sha)[1]
+            data = repo.blob(sha)
             budget.take(len(data))
             os.makedirs(os.path.dirname(path), exist_ok=True)
             with open(path, 'wb') as f:
@@ -226,6 +228,5 @@ def _changed(path, repo, tree, rel=''):
             except OSError:
                 changed += 1
                 continue
-            blob = hashlib.sha1(b'blob %d\0' % len(data) + data).hexdigest()
-            changed += blob != sha
+            changed += Blob.from_string(data).id.decode('ascii') != sha
     return changed

@@ -1,24 +1,36 @@
-"""A git repository's objects, read in plain Python (no ROS, no ``git``).
+"""A git repository's objects, read with dulwich (no ROS, no ``git``).
 
 A student's repository is untrusted: its ``.git/config`` can name commands
 (``core.fsmonitor``, ``core.hooksPath``, ``core.sshCommand``, filter drivers,
 ``include.path``), and any ``git`` run in it on the teacher's machine could
 start them. So the grader never runs ``git`` on a submission: it reads the
-objects itself, as ``git cat-file`` would, and nothing else of ``.git``:
-``HEAD``, ``refs/`` and ``packed-refs`` (where the branches point),
-``objects/`` (loose objects, packfiles with their ``.idx``, deltas of both
-kinds), ``shallow``. Never the config, the hooks, the index, the attributes,
-``objects/info/alternates`` (objects borrowed from another folder are
-missing, as they are from a copy of it). Every file is read only where it
-is, inside the repository (a link out of it is refused), and every object
-is checked against its name (its SHA-1) and bounded in size.
+objects, as ``git cat-file`` would, and nothing else of ``.git``: ``HEAD``,
+``refs/`` and ``packed-refs`` (where the branches point), ``objects/`` (loose
+objects, packfiles with their ``.idx``), ``shallow``. Never the config, the
+hooks, the index, the attributes, ``objects/info/alternates`` (objects
+borrowed from another folder are missing, as they are from a copy of it).
+
+Debian's dulwich does the reading (:mod:`~exp_assignment2.grading.plan.git_packs`
+for the packs): the objects' formats, their names (SHA-1), commits, trees and
+tags. Only its modules that read bytes are used (``dulwich.objects``,
+``dulwich.pack``, ``dulwich.lru_cache``): never ``dulwich.repo.Repo`` (it
+reads the config and its commits run hooks), ``porcelain``, ``index`` (a
+checkout, with filters) nor a client; none of what is used starts a process or
+reads a configuration. What stays here is the grader's own rules: which files
+of ``.git`` are read, each only where it is, inside the repository (a link out
+of it is refused); references followed by name only; every object bounded in
+size before it is inflated, and checked against its name.
 """
-import hashlib
 import os
 import re
 import zlib
 
-from exp_assignment2.grading.plan.git_packs import MAX_OBJECT, GitError, Pack, _inflate
+from dulwich.errors import ObjectFormatException
+from dulwich.lru_cache import LRUSizeCache
+from dulwich.object_store import peel_sha
+from dulwich.objects import ShaFile, object_class
+
+from exp_assignment2.grading.plan.git_packs import DAMAGED, MAX_OBJECT, GitError, Pack
 
 HEX = re.compile(r'^[0-9a-f]{40}$')
 REF_NAME = re.compile(r'^(HEAD|refs/[A-Za-z0-9._/+@-]+)$')
@@ -52,7 +64,8 @@ class Repository(object):
         if os.path.isdir(os.path.join(self.root, 'reftable')):
             raise GitError('a reftable repository (git 2.45\'s format): not read')
         self.objects = os.path.join(self.root, 'objects')
-        self.cache, self._cached, self._packs = {}, 0, None
+        self.cache = LRUSizeCache(CACHE_BYTES, compute_size=lambda found: len(found[1]))
+        self._packs = None
         self.shallow = set((self.read_text('shallow') or '').split())
 
     def inside(self, path):
@@ -76,12 +89,6 @@ class Repository(object):
             return None
         return self.read_file(path, 1 << 24).decode('utf-8', 'replace')
 
-    def keep(self, key, found):
-        if self._cached > CACHE_BYTES:
-            self.cache, self._cached = {}, 0
-        self.cache[key] = found
-        self._cached += len(found[1])
-
     def packs(self):
         if self._packs is None:
             folder, self._packs = os.path.join(self.objects, 'pack'), []
@@ -89,38 +96,59 @@ class Repository(object):
             for name in names:
                 pack = os.path.join(folder, name[:-4] + '.pack')
                 if name.endswith('.idx') and os.path.isfile(pack):
-                    self._packs.append(Pack(self, os.path.join(folder, name), self.inside(pack)))
+                    self._packs.append(Pack(self, self.inside(os.path.join(folder, name)),
+                                            self.inside(pack)))
         return self._packs
 
-    def read(self, sha, chain=0):
-        """(type, bytes) of the object ``sha`` (GitError: not there, or not it)."""
+    def raw(self, sha, chain=0):
+        """(type number, bytes) of the object ``sha``, not yet checked against its name."""
         loose = os.path.join(self.objects, sha[:2], sha[2:])
-        if os.path.lexists(loose):
-            raw = self.read_file(loose)
+        if os.path.lexists(loose):     # "TYPE SIZE\0" and the bytes, inflated at most so far
+            raw, what = self.read_file(loose), 'object %s' % sha[:12]
+            inflater = zlib.decompressobj()
             try:
-                start = zlib.decompressobj().decompress(raw, 64)
+                whole = inflater.decompress(raw, MAX_OBJECT + 64)
             except zlib.error:
-                start = b''
-            end = start.find(b'\0')
-            header = start[:end].split(b' ')
-            if end < 0 or len(header) != 2 or not header[1].isdigit():
-                raise GitError('object %s: not a git object' % sha[:12])
-            if int(header[1]) > MAX_OBJECT:
-                raise GitError('object %s is larger than %d MB' % (sha[:12], MAX_OBJECT >> 20))
-            body = _inflate(raw, 0, end + 1 + int(header[1]), 'object %s' % sha[:12])[end + 1:]
-            found = header[0].decode('ascii', 'replace'), body
-        else:
-            pack = next((p for p in self.packs() if sha in p.offsets), None)
-            if pack is None:
-                raise GitError('object %s is not in the repository' % sha[:12])
-            found = pack.at(pack.offsets[sha], chain)
-        name = hashlib.sha1(b'%s %d\0' % (found[0].encode(), len(found[1])) + found[1])
-        if name.hexdigest() != sha:
+                whole = b''
+            header, _, body = whole.partition(b'\0')
+            kind, _, size = header.partition(b' ')
+            if not inflater.eof or object_class(kind) is None or size != b'%d' % len(body):
+                raise GitError('%s: not a git object, or larger than %d MB' % (
+                    what, MAX_OBJECT >> 20))
+            return object_class(kind).type_num, body
+        for pack in self.packs():
+            offset = pack.offset(sha)
+            if offset is not None:
+                return pack.at(offset, chain)
+        raise GitError('object %s is not in the repository' % sha[:12])
+
+    def read(self, sha):
+        """The object ``sha`` as dulwich parses it (a Blob, Tree, Commit or Tag;
+        GitError: not there, not it, or damaged)."""
+        kind, body = self.raw(sha)
+        try:
+            found = ShaFile.from_raw_string(kind, body)
+        except DAMAGED + (ObjectFormatException,) as exc:
+            raise GitError('object %s is damaged (%s)' % (sha[:12], exc))
+        if found.id.decode('ascii') != sha:       # its name, computed from its bytes
             raise GitError('object %s does not hold what its name says' % sha[:12])
         return found
 
+    def _of_kind(self, sha, kind):
+        found = self.read(sha)
+        if found.type_name != kind:
+            raise GitError('%s is a %s, not a %s' % (sha[:12], found.type_name.decode(),
+                                                     kind.decode()))
+        return found
+
+    def blob(self, sha):
+        """The bytes of the blob ``sha``."""
+        return self._of_kind(sha, b'blob').as_raw_string()
+
     def ref(self, name, depth=0):
-        """The commit a reference (``HEAD``, ``refs/...``) names, or None (unborn)."""
+        """The commit a reference (``HEAD``, ``refs/...``) names, or None (unborn).
+        Read here, not by dulwich's refs, so that a name never leads out of ``.git``
+        and a SHA-256 hash is not cut to 40 digits."""
         if depth > 5 or not REF_NAME.match(name) or '..' in name or '//' in name:
             raise GitError('a reference that cannot be followed: %r' % name[:80])
         text = self.read_text(name)
@@ -158,65 +186,39 @@ class Repository(object):
         raise GitError('no commit, tag or branch %r in the repository' % name)
 
     def _prefixed(self, prefix):
-        found = {sha for pack in self.packs() for sha in pack.offsets if sha.startswith(prefix)}
+        found = {sha for pack in self.packs() for sha in pack.names() if sha.startswith(prefix)}
         folder = os.path.join(self.objects, prefix[:2])
         if os.path.isdir(folder):
             found |= {prefix[:2] + n for n in os.listdir(folder)
                       if (prefix[:2] + n).startswith(prefix) and HEX.match(prefix[:2] + n)}
         return found
 
+    def __getitem__(self, sha):
+        """The object ``sha`` (hex bytes), as dulwich's functions on a store ask for it."""
+        return self.read(sha.decode('ascii'))
+
     def peel(self, sha):
         """The commit an annotated tag points at (a commit: itself)."""
-        for _ in range(10):
-            kind, body = self.read(sha)
-            if kind == 'commit':
-                return sha
-            if kind != 'tag' or not body.startswith(b'object '):
-                raise GitError('%s is a %s, not a commit' % (sha[:12], kind))
-            sha = body[7:47].decode('ascii', 'replace')
-        raise GitError('%s: tags of tags of tags' % sha[:12])
+        kind, peeled = peel_sha(self, sha.encode('ascii'))
+        if peeled.type_name != b'commit':
+            raise GitError('%s is a %s, not a commit' % (sha[:12], peeled.type_name.decode()))
+        return peeled.id.decode('ascii')
 
     def commit(self, sha):
-        kind, body = self.read(sha)
-        if kind != 'commit':
-            raise GitError('%s is a %s, not a commit' % (sha[:12], kind))
-        head, _, message = body.partition(b'\n\n')
-        tree, parents, signed = None, [], None
-        for line in head.split(b'\n'):
-            key, _, value = line.partition(b' ')
-            if key == b'tree':
-                tree = value.decode('ascii', 'replace')
-            elif key == b'parent' and sha not in self.shallow:
-                parents.append(value.decode('ascii', 'replace'))
-            elif key == b'committer' or (key == b'author' and signed is None):
-                signed = value      # the committer's time: when it was made as it is
-        time, offset = _when(signed or b'')
-        if tree is None or not HEX.match(tree):
+        """The :class:`Commit` ``sha`` (its parents none at a shallow clone's end)."""
+        found = self._of_kind(sha, b'commit')
+        tree = (found.tree or b'').decode('ascii', 'replace')
+        if not HEX.match(tree):
             raise GitError('commit %s has no tree' % sha[:12])
-        subject = message.decode('utf-8', 'replace').strip().split('\n')[0][:200]
-        return Commit(sha, tree, parents, time, offset, subject)
+        # the committer's time: when it was made as it is (the author's if it has none)
+        time, zone = found.commit_time, found.commit_timezone
+        if time is None:
+            time, zone = found.author_time, found.author_timezone
+        parents = [] if sha in self.shallow else [p.decode('ascii') for p in found.parents]
+        subject = (found.message or b'').decode('utf-8', 'replace').strip().split('\n')[0][:200]
+        return Commit(sha, tree, parents, time or 0, (zone or 0) // 60, subject)
 
     def tree(self, sha):
         """[(mode, name, sha)] of a tree object."""
-        kind, body = self.read(sha)
-        if kind != 'tree':
-            raise GitError('%s is a %s, not a tree' % (sha[:12], kind))
-        out, at = [], 0
-        while at < len(body):
-            space, nul = body.find(b' ', at), body.find(b'\0', at)
-            if space < 0 or nul < space or nul + 21 > len(body):
-                raise GitError('tree %s is damaged' % sha[:12])
-            mode = int(body[at:space] or b'0', 8)
-            out.append((mode, body[space + 1:nul].decode('utf-8', 'replace'),
-                        body[nul + 1:nul + 21].hex()))
-            at = nul + 21
-        return out
-
-
-def _when(signature):
-    """(s since the epoch, minutes east of UTC) of ``Name <mail> 1700000000 +0100``."""
-    match = re.search(rb'>\s*(\d+)\s+([+-])(\d\d)(\d\d)\s*$', signature)
-    if not match:
-        return 0, 0
-    minutes = int(match.group(3)) * 60 + int(match.group(4))
-    return int(match.group(1)), -minutes if match.group(2) == b'-' else minutes
+        return [(entry.mode, entry.path.decode('utf-8', 'replace'), entry.sha.decode('ascii'))
+                for entry in self._of_kind(sha, b'tree').iteritems()]
