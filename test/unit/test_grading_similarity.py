@@ -82,6 +82,19 @@ def test_without_a_template_everyone_shares_it(made):
     assert len(result.pairs) == 3 and min(p.share for p in result.pairs) > 0.3
 
 
+def test_fingerprints_are_the_same_in_every_process():
+    """copydetect hashes with Python's hash(), salted per process: two
+    processes with other salts agree on the grader's."""
+    src = os.path.join(HERE, '..', '..', 'src')
+    code = ('from exp_assignment2.grading.similarity import fingerprints as f; '
+            'print(sorted(f.fingerprint(open(%r).read(), "x.py", "python").hashes)[:20])'
+            % os.path.join(src, 'exp_assignment2', 'grading', 'similarity', 'pairs.py'))
+    seen = {subprocess.run([sys.executable, '-c', code], stdout=subprocess.PIPE, check=True,
+                           env=dict(os.environ, PYTHONPATH=src, PYTHONHASHSEED=seed),
+                           universal_newlines=True).stdout for seed in ('1', '2')}
+    assert len(seen) == 1 and len(seen.pop()) > 100
+
+
 def test_base_limit_is_moss_m():
     assert similarity.default_base_limit(8) == 3
     assert similarity.default_base_limit(300) == 30

@@ -5,14 +5,16 @@ The fingerprints are PyPI's ``copydetect``'s (``CodeFingerprint``: pygments
 tokens with every name turned into one letter and comments and whitespace
 dropped, k-grams of them hashed and winnowed), so renamed identifiers,
 re-indentation and changed comments change nothing; a fingerprint is a set
-member, so reordered functions change nothing either. Only the code of the
+member, so reordered functions change nothing either. Only the k-grams' hash
+is ours (:func:`kgram_hashes`): copydetect's is Python's ``hash()``, salted
+anew in every process, so that its figures differed from one run to the next
+and no fingerprint could be kept. Only the code of the
 packages a run builds is read (``folders``: a repository's vendored packages,
 which nothing graded uses, are nobody's work). How pairs are compared, and
 what is left out of both sides of their share, is
 :mod:`~exp_assignment2.grading.similarity.pairs`'.
 """
 import hashlib
-import io
 import logging
 import os
 
@@ -28,6 +30,9 @@ LANGUAGES = {'.py': 'python', '.cpp': 'cpp', '.cc': 'cpp', '.cxx': 'cpp', '.h': 
              '.xacro': 'xml', '.sdf': 'xml', '.world': 'xml', '.yaml': 'yaml', '.yml': 'yaml'}
 # package.xml and CMakeLists.txt are written by catkin_create_pkg: the same in all
 IGNORED_FILES = {'package.xml', 'CMakeLists.txt'}
+# the k-grams' hash (kgram_hashes): an odd base, then splitmix64's finaliser
+_BASE = 0x100000001b3
+_MIX = ((30, 0xbf58476d1ce4e5b9), (27, 0x94d049bb133111eb), (31, 0))
 
 
 def default_base_limit(count, share=0.1):
@@ -71,13 +76,43 @@ def code_files(root):
     return out
 
 
+def kgram_hashes(text, k=NOISE):
+    """A 64-bit hash of every ``k`` characters of ``text`` (int64, as
+    copydetect's), the same in every process: a polynomial over the code
+    points modulo 2**64, its bits mixed by splitmix64's finaliser."""
+    import numpy as np
+    codes = np.frombuffer(text.encode('utf-32-le'), dtype=np.uint32).astype(np.uint64)
+    count = len(codes) - k + 1
+    if count <= 0:
+        return np.zeros(0, dtype=np.int64)
+    out = np.zeros(count, dtype=np.uint64)
+    for j in range(k):          # numpy's uint64 arithmetic wraps: modulo 2**64
+        out = out * _BASE + codes[j:j + count]
+    for shift, factor in _MIX:
+        out ^= out >> shift
+        out = out * factor if factor else out
+    return out.view(np.int64)
+
+
 def fingerprint(text, rel, language):
-    """copydetect's fingerprint of one file's text (None when it has no token)."""
+    """copydetect's fingerprint of one file's text (None when it has no
+    token): its filtering and winnowing over :func:`kgram_hashes`."""
     from copydetect import CodeFingerprint
+    from copydetect.utils import filter_code, get_token_coverage, winnow
     logging.getLogger().setLevel(logging.ERROR)     # copydetect warns of every odd file
-    fp = CodeFingerprint(rel, NOISE, WINDOW, filter=True, language=language,
-                         fp=io.StringIO(text))
-    return fp if fp.filtered_code else None
+    filtered, offsets = filter_code(text, rel, language)
+    if not filtered:
+        return None
+    hashes, where = winnow(kgram_hashes(filtered), WINDOW, remove_duplicates=False)
+    fp = CodeFingerprint.__new__(CodeFingerprint)   # its attributes, as its __init__ sets them
+    fp.filename, fp.raw_code, fp.filtered_code, fp.offsets, fp.k = \
+        rel, text, filtered, offsets, NOISE
+    fp.hash_idx = {}
+    for h, at in zip(hashes.tolist(), where.tolist()):
+        fp.hash_idx.setdefault(h, []).append(at)
+    fp.hashes = set(fp.hash_idx)
+    fp.token_coverage = get_token_coverage(fp.hash_idx, NOISE, len(filtered))
+    return fp
 
 
 class Submission(object):
