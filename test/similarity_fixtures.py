@@ -124,6 +124,44 @@ def make_class(dest, count=8, seed=42):
     return template, folder
 
 
+def make_course_template(dest):
+    """A template shaped as the course's (its robot and ball's URDF, a world,
+    ``launch/gazebo_world.launch``, ``scripts/go_to_point_ball.py`` and
+    ``go_to_point_robot.py``), made of this package's own fixtures and nodes."""
+    shutil.copytree(os.path.join(HERE, 'fixtures', 'student_pkg'), dest)
+    shutil.copy(os.path.join(grading_fixtures.BASE, 'urdf', 'ball.urdf'),
+                os.path.join(dest, 'urdf'))
+    nodes = os.path.join(os.path.dirname(HERE), 'src', 'exp_assignment2', 'nodes')
+    for name in ('go_to_point_ball.py', 'go_to_point_robot.py'):
+        with open(os.path.join(nodes, name)) as f:
+            _write(dest, 'scripts/' + name, f.read())
+    return dest
+
+
+def make_small_class(dest, seed=62):
+    """(template dir, class dir) of three submissions on the course's template
+    (:func:`make_course_template`), each with its node in the launch file:
+    ``independent`` (code of its own), ``copy_a`` and ``copy_b`` (two
+    disguises of one other class's code)."""
+    rng = random.Random(seed)
+    template = make_course_template(os.path.join(dest, 'template'))
+    folder = os.path.join(dest, 'class')
+    elsewhere = independent_code(rng, functions=10)
+    own = {'independent': independent_code(rng, functions=10),
+           'copy_a': disguise(elsewhere, rng), 'copy_b': disguise(elsewhere, rng)}
+    for name, code in own.items():
+        root = os.path.join(folder, name)
+        shutil.copytree(template, root)
+        _write(root, 'scripts/state_machine.py', code)
+        launch = os.path.join(root, 'launch', 'gazebo_world.launch')
+        with open(launch) as f:
+            text = f.read()
+        with open(launch, 'w') as f:
+            f.write(text.replace('</launch>', '  <node name="%s" pkg="dog_pkg" '
+                                 'type="state_machine.py"/>\n</launch>' % name))
+    return template, folder
+
+
 def make_synthetic(dest, count, seed=1):
     """A bench's class: ``count`` submissions made from the fixtures, each a
     mutated copy (the template, the course file, independent code); every

@@ -7,6 +7,7 @@ every submission of a folder built, run in its sandbox and judged; one report.
           [--template DIR ...] [--base-share F] [--similarity-only]
           [--deadline TIME] [--reference DIR ...]
     grade --calibrate [REF] [--episodes N] [--profile ...] [--out DIR]
+    grade --fingerprint-template PROFILE.yaml --template DIR [--template DIR ...]
 """
 import argparse
 import multiprocessing
@@ -82,7 +83,7 @@ def parse_args(argv):
             parser.error(str(exc))
     if not 0 < args.base_share <= 1:
         parser.error('--base-share: %r is not a share in (0, 1]' % args.base_share)
-    if args.submissions is None and args.calibrate is None:
+    if args.submissions is None and args.calibrate is None and not args.fingerprint_template:
         parser.error('give a folder of submissions (or --calibrate)')
     for name in ('jobs', 'repeat', 'episodes'):
         value = getattr(args, name)
@@ -158,6 +159,8 @@ def main(argv=None):
     if args.calibrate is not None:      # a reference graded, its figures made a profile
         from exp_assignment2.grading.plan import calibration
         return calibration.main(args, main, log)
+    if args.fingerprint_template:       # a template's fingerprints kept in a profile
+        return similarity_command.fingerprint_template(args, log)
     out = os.path.abspath(args.out) if args.out else default_out(args.submissions)
     if args.similarity_only:
         return similarity_only(args, out, log)

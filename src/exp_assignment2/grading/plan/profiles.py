@@ -42,7 +42,9 @@ DEFAULTS = {'title': '', 'world_commands': [], 'delay': 5, 'cpu_per_run': 1.0,
             'arena': None, 'camera_fov': None}
 
 
-HEAD_METRICS = ('head_turn_near_ball', 'looks_both_ways')     # checks that judge the head
+HEAD_METRICS = ('head_turn_near_ball', 'looks_both_ways')
+# the course's template as fingerprints, for the similarity report alone (load)
+TEMPLATE_PRINTS = 'template_fingerprints'     # checks that judge the head
 
 
 class ProfileError(Exception):
@@ -61,12 +63,29 @@ def available():
 
 
 def load(name_or_path):
-    """The profile (a dict with every key), checked; ProfileError saying why not."""
+    """The profile (a dict with every key), checked; ProfileError saying why not.
+    Without its template fingerprints: the similarity report's alone
+    (:func:`template_fingerprints`), never part of what a run is."""
+    data, where = _merged(name_or_path)
+    if isinstance(data, dict):
+        data = {k: v for k, v in data.items() if k != TEMPLATE_PRINTS}
+    return check(data, where)
+
+
+def template_fingerprints(name_or_path):
+    """The profile's (or its base's) ``template_fingerprints`` as written, or
+    None (:mod:`exp_assignment2.grading.similarity.template_prints` reads it)."""
+    data = _merged(name_or_path)[0]
+    return data.get(TEMPLATE_PRINTS) if isinstance(data, dict) else None
+
+
+def _merged(name_or_path):
+    """(the profile's raw data over its base's, its file's name)."""
     path, data = _read(name_or_path)
     here = os.path.dirname(path)
     data = profile_keys.merged_with_base(
         data, lambda base: _read(base, here)[1], os.path.basename(path), ProfileError)
-    return check(data, os.path.basename(path))
+    return data, os.path.basename(path)
 
 
 def _read(name_or_path, here=None):

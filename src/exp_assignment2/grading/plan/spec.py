@@ -87,8 +87,9 @@ def _pick(cli, option, teacher, teacher_key, profile, profile_key, default):
 
 
 def settings(cli, teacher, load_profile):
-    """({'profile': the profile (a dict), 'duration', 'real_time_factor',
-    'delay'}, {key: where its value came from}) from the command line's values
+    """({'profile': the profile (a dict), 'profile_source': its name or file,
+    'duration', 'real_time_factor', 'delay'}, {key: where its value came from})
+    from the command line's values
     ``cli`` (a dict; None: not given), the teacher's file ``teacher`` (a dict)
     and ``load_profile(name)``. For every key: the command line, else
     grading.yaml, else the profile (chosen first, by the same rule), else
@@ -100,6 +101,6 @@ def settings(cli, teacher, load_profile):
         chosen[key], whence[key] = _pick(cli, option, teacher, teacher_key, profile,
                                          profile_key, default)
     profile['delay'] = chosen['delay']        # the driver reads it from the profile
-    chosen.update(profile=profile, duration=float(chosen['duration']),
+    chosen.update(profile=profile, profile_source=name, duration=float(chosen['duration']),
                   real_time_factor=float(chosen['real_time_factor']))
     return chosen, whence

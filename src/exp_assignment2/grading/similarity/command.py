@@ -5,9 +5,11 @@ exit code is grade's: 0 made, 2 a mistake in what was asked, 1 it failed
 import os
 
 from exp_assignment2.grading.plan import profiles
+from exp_assignment2.grading.plan.copies import Copies
 from exp_assignment2.grading.plan.submissions import SubmissionError
 from exp_assignment2.grading.plan.teacher_file import TeacherFileError
 from exp_assignment2.grading.similarity import step as similarity_run
+from exp_assignment2.grading.similarity import template_prints
 
 USAGE = 2
 
@@ -25,6 +27,9 @@ def add_args(parser):
     parser.add_argument('--reference', action='append', metavar='DIR',
                         help='a folder of earlier years\' submissions the class is compared '
                         'with (repeatable; never compared among themselves)')
+    parser.add_argument('--fingerprint-template', metavar='PROFILE.yaml',
+                        help='write the --template folders\' fingerprints into this profile '
+                        'file: a grading with it leaves them out, with no --template')
 
 
 def step(args, out, log, read, submissions, copies):
@@ -38,7 +43,9 @@ def step(args, out, log, read, submissions, copies):
                            references=similarity_run.references_of(args), settings={
                                'teacher': teacher, 'profile': chosen['profile'],
                                'deadline': args.deadline,
-                               'runs_dir': runs_dir if os.path.isdir(runs_dir) else None})
+                               'runs_dir': runs_dir if os.path.isdir(runs_dir) else None,
+                               'template_prints': template_prints.of_profile(
+                                   chosen.get('profile_source'))})
     except ImportError as exc:      # copydetect: tools/run grade installs it
         log('similarity: not made: %s' % exc)
         return USAGE
@@ -48,4 +55,34 @@ def step(args, out, log, read, submissions, copies):
     except Exception as exc:    # noqa: B902 -- a fault of the similarity's costs no grade
         log('similarity: failed: %s: %s' % (type(exc).__name__, exc))
         return 1
+    return 0
+
+
+def fingerprint_template(args, log):
+    """``--fingerprint-template PROFILE``: the ``--template`` folders' (or
+    archives') fingerprints written into the profile file (0; 2: a mistake)."""
+    path = args.fingerprint_template
+    if not args.template:
+        log('--fingerprint-template: give the template with --template DIR (repeatable)')
+        return USAGE
+    if not os.path.isfile(path):
+        log('--fingerprint-template: %s is not a profile file (start one with "base: dog" '
+            'and a name:)' % path)
+        return USAGE
+    try:
+        templates = similarity_run.templates_of(args, {}, os.getcwd())
+        with Copies() as copies:
+            keys = similarity_run.template_keys(similarity_run.Reader(copies), templates)[0]
+        if not keys:
+            log('--fingerprint-template: no code to fingerprint in %s' % ', '.join(templates))
+            return USAGE
+        template_prints.write_into(path, keys, templates)
+    except ImportError as exc:      # copydetect: tools/run grade installs it
+        log('--fingerprint-template: %s' % exc)
+        return USAGE
+    except (TeacherFileError, SubmissionError, profiles.ProfileError) as exc:
+        log('--fingerprint-template: %s' % exc)
+        return USAGE
+    log('%d fingerprints of %s written into %s: a grading with this profile leaves them out '
+        'of every share' % (len(keys), ', '.join(templates), path))
     return 0

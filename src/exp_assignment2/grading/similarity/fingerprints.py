@@ -7,8 +7,8 @@ dropped, k-grams of them hashed and winnowed), so renamed identifiers,
 re-indentation and changed comments change nothing; a fingerprint is a set
 member, so reordered functions change nothing either. Only the k-grams' hash
 is ours (:func:`kgram_hashes`): copydetect's is Python's ``hash()``, salted
-anew in every process, so that its figures differed from one run to the next
-and no fingerprint could be kept. Only the code of the
+anew in every process, and a profile keeps a template's fingerprints from
+one process to the next (:mod:`.template_prints`). Only the code of the
 packages a run builds is read (``folders``: a repository's vendored packages,
 which nothing graded uses, are nobody's work). How pairs are compared, and
 what is left out of both sides of their share, is
@@ -33,6 +33,8 @@ IGNORED_FILES = {'package.xml', 'CMakeLists.txt'}
 # the k-grams' hash (kgram_hashes): an odd base, then splitmix64's finaliser
 _BASE = 0x100000001b3
 _MIX = ((30, 0xbf58476d1ce4e5b9), (27, 0x94d049bb133111eb), (31, 0))
+# how fingerprints are made: a profile's template fingerprints made otherwise are refused
+SCHEME = 'winnow-k%d-w%d-poly64.1' % (NOISE, WINDOW)
 
 
 def default_base_limit(count, share=0.1):
@@ -164,11 +166,18 @@ def raw_range(fp, start, end):
     return int(start + shift[0]), int(end + shift[1])
 
 
+def template_keys(hashes):
+    """The template's fingerprints as a profile keeps them, and as they are
+    looked for: their low 32 bits (4 bytes each in the profile; a student's
+    fingerprint is taken for the template's by chance about once in a million)."""
+    return {int(h) & 0xffffffff for h in hashes}
+
+
 def template_hashes(roots):
-    """Every fingerprint of the template folders' code files."""
+    """Every fingerprint of the template folders' code files (:func:`template_keys`)."""
     out = set()
     for root in roots:
-        out |= Submission.read('template', root).hashes()
+        out |= template_keys(Submission.read('template', root).hashes())
     return out
 
 

@@ -5,7 +5,8 @@ As MOSS does, an inverted index (fingerprint -> submissions) finds the pairs
 that share a fingerprint; only those are compared. What the whole class
 shares is nobody's copy, and is left out of **both sides** of a pair's share:
 
-- the template's code (``--template``: the assignment's package, earlier labs);
+- the template's code (``--template``: the assignment's package, earlier labs;
+  or the profile's fingerprints of it, :mod:`.template_prints`);
 - base code: a fingerprint the class carries in more than ``base_limit`` of
   its submissions (MOSS's ``-m``), e.g. a course file most students carry but
   nobody handed in as a template, or the template itself when it was not
@@ -32,9 +33,9 @@ Pair.__doc__ = ('A pair: ``share`` (0..1), ``shared`` (token characters both own
                 'names (sorted), ``identical`` (byte for byte), ``sizes`` (their own code).')
 
 
-def _drop(fp, hashes):
-    """``fp`` without the fingerprints in ``hashes`` (in place)."""
-    gone = fp.hashes & hashes
+def _drop(fp, keys):
+    """``fp`` without the template's fingerprints (``keys``: their low 32 bits; in place)."""
+    gone = {h for h in fp.hashes if h & 0xffffffff in keys}
     if gone:
         fp.hashes = fp.hashes - gone
         fp.hash_idx = {h: i for h, i in fp.hash_idx.items() if h not in gone}
@@ -98,10 +99,11 @@ def _base(everyone, index, base_limit):
     return base
 
 
-def compare(submissions, template_hashes=(), base_limit=None, references=()):
+def compare(submissions, template_keys=(), base_limit=None, references=()):
     """Every pair of ``submissions`` (``fingerprints.Submission``), and of each
-    with each of ``references``, that shares code of its own; a ``Result``."""
-    template_hashes = set(template_hashes)
+    with each of ``references``, that shares code of its own; a ``Result``.
+    ``template_keys``: the template's fingerprints (``fingerprints.template_keys``)."""
+    template_keys = set(template_keys)
     for sub in references:
         sub.reference = True
     everyone = list(submissions) + list(references)
@@ -110,7 +112,7 @@ def compare(submissions, template_hashes=(), base_limit=None, references=()):
     index = collections.defaultdict(list)       # fingerprint -> submissions carrying it
     for number, sub in enumerate(everyone):
         for fp in sub.files.values():
-            _drop(fp, template_hashes)
+            _drop(fp, template_keys)
         for h in sub.hashes():
             index[h].append(number)
     base = _base(everyone, index, base_limit)
@@ -128,7 +130,7 @@ def compare(submissions, template_hashes=(), base_limit=None, references=()):
     pairs.sort(key=lambda p: (-p.share, -p.shared, p.a, p.b))
     empty = [s.name for s in submissions if not s.own]
     return Result(everyone, pairs, _describe_base(everyone, base), base_limit,
-                  len(template_hashes), empty, [s.name for s in references])
+                  len(template_keys), empty, [s.name for s in references])
 
 
 def _pair(a, b, hashes):

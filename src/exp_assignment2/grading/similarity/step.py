@@ -93,8 +93,9 @@ def run(submissions, out, templates, copies, base_share=0.1, only=None, log=prin
         references=(), settings=None):
     """Compare the folder's ``submissions`` (discovered once, by the grading),
     and each with the ``references`` folders' submissions (each discovered
-    once here), all read from their ``copies`` (plan.copies.Copies); write the
-    report into ``out``; the Result."""
+    once here), all read from their ``copies`` (plan.copies.Copies), the
+    ``templates`` and the profile's template fingerprints (``settings``'
+    ``template_prints``) left out; write the report into ``out``; the Result."""
     reader = Reader(copies, settings)
     read = [reader.read(s) for s in _entries(submissions, set(templates), only)]
     olds, names = [], set()
@@ -105,19 +106,29 @@ def run(submissions, out, templates, copies, base_share=0.1, only=None, log=prin
         names.add(label)
         olds += [reader.read(s, '%s/%s' % (label, s.name), True)
                  for s in _entries(discover(where)[0])]
-    template_hashes = set()
-    for number, path in enumerate(templates):
-        template_hashes |= reader.read(Submission('template_%d' % number, path, _kind(path)),
-                                       whole=True).hashes()
+    keys, named = template_keys(reader, templates)
+    prints = (settings or {}).get('template_prints')     # the profile's (template_prints)
+    if prints is not None:
+        keys, named = keys | prints.keys, named + [prints.label()]
     limit = similarity.default_base_limit(len(read), base_share)
-    result = pairs.compare(read, template_hashes, limit, olds)
-    similarity_report.write(out, result, templates, references)
+    result = pairs.compare(read, keys, limit, olds)
+    similarity_report.write(out, result, named, references)
     top = result.pairs[0] if result.pairs else None
     log('similarity: %d submissions%s, %d pairs share code beyond %d template and %d base '
         'fingerprints%s; %s (not a verdict)' % (
             len(read), ' and %d references' % len(olds) if olds else '', len(result.pairs),
-            len(template_hashes), len(result.base),
+            len(keys), len(result.base),
             '; most: %s and %s, %.0f%%%s' % (top.a, top.b, 100 * top.share,
                                             ' (identical)' if top.identical else '')
             if top else '', os.path.join(out, 'similarity.html')))
     return result
+
+
+def template_keys(reader, templates):
+    """(the fingerprints' keys of the template folders or archives, each read
+    whole by ``reader``; their paths)."""
+    keys = set()
+    for number, path in enumerate(templates):
+        keys |= similarity.template_keys(reader.read(
+            Submission('template_%d' % number, path, _kind(path)), whole=True).hashes())
+    return keys, list(templates)
