@@ -1,7 +1,7 @@
-"""The course's template kept in a profile as fingerprints
-(grading/similarity/template_prints.py; no ROS, nothing run): three
-submissions on the course's template, one independent and two disguised
-copies of one other class's code."""
+"""The course's template kept in a profile as fingerprints, and a class too
+small to tell the course's code (grading/similarity/template_prints.py,
+pairs.py, page.py; no ROS, nothing run): three submissions on the course's
+template, one independent and two disguised copies of one other class's code."""
 import json
 import os
 import sys
@@ -35,6 +35,16 @@ def a_profile(path, text='base: dog\n'):
     return str(path)
 
 
+def test_a_small_class_without_a_template_gets_no_figure(small, tmp_path):
+    _, folder = small
+    data, found, page = reported(folder, str(tmp_path / 'out'))
+    assert data['too_small'] and len(found) == 3
+    assert all(p['share'] is None for p in found.values())
+    assert all(s['top_with'] is None for s in data['submissions'])   # the index: no figure
+    assert 'too few to tell the course' in page and '%</td>' not in page
+    assert 'state_machine.py' in page       # the passages, for a person to read
+
+
 def test_the_profiles_template_is_left_out_by_default(small, tmp_path):
     template, folder = small
     profile = a_profile(tmp_path / 'course.yaml')
@@ -42,7 +52,7 @@ def test_the_profiles_template_is_left_out_by_default(small, tmp_path):
     assert 'template_fingerprints' not in profiles.load(profile)   # never in a run's plan
     assert profiles.load(profile)['name'] == 'dog'
     data, found, page = reported(folder, str(tmp_path / 'out'), '--profile', profile)
-    assert data['template_fingerprints'] > 500
+    assert not data['too_small'] and data['template_fingerprints'] > 500
     assert found[('copy_a', 'copy_b')]['share'] >= 0.9                # the copies: a copy
     assert found[('copy_a', 'independent')]['share'] < 0.2
     assert found[('copy_b', 'independent')]['share'] < 0.2

@@ -1,8 +1,9 @@
 """The similarity report (issue 42): ``similarity.html`` (pairs ranked, a
 histogram of all pairs, the shared passages side by side), ``similarity.json``
 for scripts, and a column of each submission's highest pair in ``index.html``.
-Made from a :class:`~exp_assignment2.grading.similarity.fingerprints.Result`; no ROS.
-Every student text is escaped: a file may hold anything.
+Made from a :class:`~exp_assignment2.grading.similarity.pairs.Result`; no ROS.
+Every student text is escaped: a file may hold anything. A class too small to
+tell the course's code, with no template, has its passages and no figure.
 """
 import collections
 import json
@@ -24,6 +25,15 @@ NOT_A_VERDICT = ('Similarity is not a verdict: it changes no verdict and no scor
                  'list for a person to read, as MOSS and JPlag say of theirs: shared code can '
                  'come from a source both used, from working together as allowed, or from the '
                  'course; and copied code that was rewritten by hand is not found.')
+
+
+TOO_SMALL = ('%d submissions are too few to tell the course\'s code from a copy: code is '
+             'the course\'s when more than %d carry it, and in a class of fewer than %d what '
+             'a few share is as likely the course\'s files as a copy. No figure is given; the '
+             'passages below are for a person to read. Give the template: --template DIR, or '
+             'a profile that carries its fingerprints (grade --fingerprint-template).')
+TOO_SMALL_LOG = ('; too few to tell the course\'s code from a copy: no figure (give '
+                 '--template, or a profile with its fingerprints)')
 
 
 def _slug(a, b):
@@ -109,17 +119,24 @@ def _base_groups(result, shown=3, longest=600):
     return out
 
 
-def _share(pair):
-    """A pair's share as the pages write it."""
-    return 'identical' if pair.identical else '%.0f%%' % (100 * pair.share)
+def _share(pair, result):
+    """A pair's share as the pages write it (no figure: a class too small)."""
+    if pair.identical:
+        return 'identical'
+    return '—' if result.too_small else '%.0f%%' % (100 * pair.share)
+
+
+def _figure(value, result):
+    return None if result.too_small else value
 
 
 def to_json(result, templates, references=()):
     """What similarity.json holds: settings, every pair, each submission's top, base code."""
-    top = result.top_for()
+    top = {} if result.too_small else result.top_for()
     olds = set(result.references)
     return {
         'note': NOT_A_VERDICT, 'templates': list(templates), 'references': list(references),
+        'too_small': result.too_small,
         'min_own': pairs_.MIN_OWN, 'nothing_of_their_own': result.empty,
         'base_limit': result.base_limit, 'template_fingerprints': result.template_count,
         'noise_threshold': similarity.NOISE, 'guarantee_threshold': similarity.GUARANTEE,
@@ -128,7 +145,8 @@ def to_json(result, templates, references=()):
                          'top_share': top.get(s.name, (0.0, None))[0],
                          'top_with': top.get(s.name, (0.0, None))[1]}
                         for s in result.submissions],
-        'pairs': [{'a': p.a, 'b': p.b, 'share': round(float(p.share), 4), 'shared': int(p.shared),
+        'pairs': [{'a': p.a, 'b': p.b, 'share': _figure(round(float(p.share), 4), result),
+                   'shared': int(p.shared),
                    'identical': p.identical, 'own': [int(n) for n in p.sizes],
                    'reference': p.a in olds or p.b in olds}
                   for p in result.pairs],
@@ -138,7 +156,8 @@ def to_json(result, templates, references=()):
 
 def _pair_section(result, pair):
     subs, a, b = {s.name: s for s in result.submissions}, pair.a, pair.b
-    parts = ['<h3 id="%s">%s and %s: %s</h3>' % (_slug(a, b), _e(a), _e(b), _share(pair))]
+    parts = ['<h3 id="%s">%s and %s: %s</h3>' % (_slug(a, b), _e(a), _e(b),
+                                                 _share(pair, result))]
     if pair.identical:
         parts.append('<p>The same code files, byte for byte.</p>')
     passages = similarity.shared_passages(subs[a], subs[b])
@@ -168,6 +187,9 @@ def page(result, templates, references=()):
                     len(olds), _e(', '.join(references))) if olds else '', len(pairs),
                 _e(', '.join(templates) or 'none given'), result.template_count,
                 result.base_limit, len(result.base), pairs_.MIN_OWN),
+             '<p class="note">%s</p>' % _e(TOO_SMALL % (
+                 len(result.submissions) - len(olds), result.base_limit,
+                 2 * (result.base_limit + 1))) if result.too_small else
              '<p><img src="similarity-histogram.svg" alt="histogram of all pairs"></p>']
     if result.empty:
         parts.append('<p>No code of their own beyond template and base code: %s.</p>'
@@ -181,7 +203,8 @@ def page(result, templates, references=()):
         if rank <= DETAILED:
             name = '<a href="#%s">%s</a>' % (_slug(pair.a, pair.b), name)
         parts.append('<tr><td>%d</td><td>%s</td><td>%s</td><td>%d</td><td>%d and %d</td></tr>'
-                     % (rank, name, _share(pair), pair.shared, pair.sizes[0], pair.sizes[1]))
+                     % (rank, name, _share(pair, result), pair.shared, pair.sizes[0],
+                        pair.sizes[1]))
     parts.append('</tbody></table>')
     if len(pairs) > LISTED:
         parts.append('<p>%d more pairs in similarity.json.</p>' % (len(pairs) - LISTED))

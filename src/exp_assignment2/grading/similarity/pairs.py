@@ -17,6 +17,10 @@ A pair's share is the code both own (fingerprints beyond template and base
 code) over the smaller one's own code (at least ``MIN_OWN`` characters: two
 submissions of a few lines of their own do not read 100 % on one line).
 Byte-identical submissions with code of their own read 100 %, ``identical``.
+A class too small to tell base code (fewer than twice the submissions a
+passage needs to be base code: 8 by default), with no template, gets no
+figure (``too_small``): what a few submissions share is as likely the
+course's files as a copy, and every pair would read as one.
 References (``--reference``: earlier years' submissions) are compared with the
 class, never among themselves, and do not count for base code. A share is
 for a person to read, never a verdict.
@@ -59,10 +63,10 @@ class Result(object):
     """What ``compare`` found: ``pairs`` [Pair] best first, ``base``
     {fingerprint: (carriers, submission name, file, the passage's text)},
     ``empty`` (the class's submissions with no code of their own), the
-    references' names and the settings used."""
+    references' names, the settings used and ``too_small`` (no figure to give)."""
 
     def __init__(self, submissions, pairs, base, base_limit, template_count, empty=(),
-                 references=()):
+                 references=(), too_small=False):
         self.submissions = submissions
         self.pairs = pairs
         self.base = base
@@ -70,6 +74,7 @@ class Result(object):
         self.template_count = template_count
         self.empty = list(empty)
         self.references = list(references)
+        self.too_small = too_small
 
     def top_for(self):
         """{name: (share, other name)} of each submission's highest pair."""
@@ -97,6 +102,13 @@ def _base(everyone, index, base_limit):
         if len(distinct) > base_limit:
             base[h] = len(carriers)
     return base
+
+
+def too_small(submissions, base_limit):
+    """Whether a class of ``submissions`` is too small to tell base code:
+    fewer distinct ones (identical ones once) than twice what base code needs."""
+    distinct = {s.digest or ('alone', n) for n, s in enumerate(submissions)}
+    return len(distinct) < 2 * (base_limit + 1)
 
 
 def compare(submissions, template_keys=(), base_limit=None, references=()):
@@ -130,7 +142,8 @@ def compare(submissions, template_keys=(), base_limit=None, references=()):
     pairs.sort(key=lambda p: (-p.share, -p.shared, p.a, p.b))
     empty = [s.name for s in submissions if not s.own]
     return Result(everyone, pairs, _describe_base(everyone, base), base_limit,
-                  len(template_keys), empty, [s.name for s in references])
+                  len(template_keys), empty, [s.name for s in references],
+                  not template_keys and too_small(submissions, base_limit))
 
 
 def _pair(a, b, hashes):

@@ -117,9 +117,9 @@ def run(submissions, out, templates, copies, base_share=0.1, only=None, log=prin
     log('similarity: %d submissions%s, %d pairs share code beyond %d template and %d base '
         'fingerprints%s; %s (not a verdict)' % (
             len(read), ' and %d references' % len(olds) if olds else '', len(result.pairs),
-            len(keys), len(result.base),
-            '; most: %s and %s, %.0f%%%s' % (top.a, top.b, 100 * top.share,
-                                            ' (identical)' if top.identical else '')
+            len(keys), len(result.base), similarity_report.TOO_SMALL_LOG if result.too_small
+            else '; most: %s and %s, %.0f%%%s' % (top.a, top.b, 100 * top.share,
+                                                 ' (identical)' if top.identical else '')
             if top else '', os.path.join(out, 'similarity.html')))
     return result
 
