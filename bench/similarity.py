@@ -10,6 +10,13 @@ disguised copy of the one before's core), then times ``grade CLASS
 pairs found and whether every planted copy is among the top pairs. The goal:
 300 submissions in a few minutes on a 2-core machine. Wall time depends on
 what else the machine runs: read it as indicative.
+
+``--small`` measures a class too small to tell the course's code instead
+(test/similarity_fixtures.py's ``make_small_class``: three submissions on
+the course's template, one independent, two disguised copies of one other
+class's code): the figures of its pairs with no template (what the page
+would say: it gives none), with ``--template``, and with a profile that
+carries the template's fingerprints (``--fingerprint-template``).
 """
 import argparse
 import json
@@ -43,12 +50,40 @@ def measure(count, scratch):
     return seconds, len(pairs), len(planted), len(planted & top)
 
 
+def measure_small(scratch):
+    """{way the template is given: {pair: share}} of the small class; with none,
+    the share the page would give were the class not too small."""
+    from exp_assignment2.grading.similarity import fingerprints, pairs
+    template, folder = similarity_fixtures.make_small_class(os.path.join(scratch, 'small'))
+    names = sorted(os.listdir(folder))
+    read = [fingerprints.Submission.read(n, os.path.join(folder, n)) for n in names]
+    out = {'none (no figure on the page)': {(p.a, p.b): p.share
+                                            for p in pairs.compare(read).pairs}}
+    profile = os.path.join(scratch, 'course.yaml')
+    with open(profile, 'w') as f:
+        f.write('base: dog\n')
+    assert cli.main(['--fingerprint-template', profile, '--template', template]) == 0
+    for way, options in (('--template DIR', ['--template', template]),
+                         ("the profile's fingerprints", ['--profile', profile])):
+        report = os.path.join(scratch, 'report_%d' % len(out))
+        assert cli.main([folder, '--similarity-only', '--out', report] + options) == 0
+        with open(os.path.join(report, 'similarity.json')) as f:
+            out[way] = {(p['a'], p['b']): p['share'] for p in json.load(f)['pairs']}
+    return out
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--counts', type=int, nargs='+', default=[30, 100, 300])
+    parser.add_argument('--small', action='store_true', help='the small class instead')
     args = parser.parse_args()
     scratch = tempfile.mkdtemp(prefix='exp2-bench-similar-')
     try:
+        if args.small:
+            for way, shares in measure_small(scratch).items():
+                print('%-28s %s' % (way, ', '.join('%s-%s %.1f %%' % (a, b, 100 * share)
+                                                   for (a, b), share in sorted(shares.items()))))
+            return
         print('submissions  wall s  pairs sharing code  planted copies on top')
         for count in args.counts:
             seconds, pairs, planted, found = measure(count, scratch)
