@@ -10,17 +10,18 @@ objects, packfiles with their ``.idx``), ``shallow``. Never the config, the
 hooks, the index, the attributes, ``objects/info/alternates`` (objects
 borrowed from another folder are missing, as they are from a copy of it).
 
-Debian's dulwich does the reading (:mod:`~exp_assignment2.grading.plan.git_packs`
-for the packs): the objects' formats, their names (SHA-1), commits, trees and
-tags. Only its modules that read bytes are used (``dulwich.objects``,
-``dulwich.pack``, ``dulwich.lru_cache``): never ``dulwich.repo.Repo`` (it
-reads the config and its commits run hooks), ``porcelain``, ``index`` (a
-checkout, with filters) nor a client; none of what is used starts a process or
-reads a configuration. What stays here is the grader's own rules: which files
-of ``.git`` are read, each only where it is, inside the repository (a link out
-of it is refused); references followed by name only; every object bounded in
-size before it is inflated, and checked against its name.
+Debian's dulwich reads them (:mod:`~exp_assignment2.grading.plan.git_packs`
+for the packs): the objects' formats and names (SHA-1), commits, trees and
+tags. Only its modules that read bytes are used (``dulwich.objects``, ``.pack``,
+``.object_store``'s ``peel_sha``, ``.lru_cache``), none of which starts a
+process or reads a configuration: never ``dulwich.repo.Repo`` (it reads the
+config, its commits run hooks), ``porcelain``, ``index`` (a checkout, with
+filters) nor a client. The grader's own rules stay here: which files of
+``.git`` are read, each only inside it (a link out is refused); references
+followed by name only; every object bounded in size before it is inflated,
+and checked against its name.
 """
+import collections
 import os
 import re
 import zlib
@@ -37,14 +38,10 @@ REF_NAME = re.compile(r'^(HEAD|refs/[A-Za-z0-9._/+@-]+)$')
 CACHE_BYTES = 64 * 1024 * 1024     # objects kept decoded (a delta chain's bases)
 
 
-class Commit(object):
-    """A commit's ``sha``, ``tree``, ``parents``, ``time`` (s since the epoch,
-    the committer's), ``offset`` (the committer's zone, minutes east of UTC)
-    and ``subject`` (its message's first line)."""
-
-    def __init__(self, sha, tree, parents, time, offset, subject):
-        self.sha, self.tree, self.parents = sha, tree, parents
-        self.time, self.offset, self.subject = time, offset, subject
+Commit = collections.namedtuple('Commit', 'sha tree parents time offset subject')
+Commit.__doc__ = ("A commit's ``sha``, ``tree``, ``parents``, ``time`` (s since the epoch, the "
+                  "committer's), ``offset`` (the committer's zone, minutes east of UTC) and "
+                  "``subject`` (its message's first line).")
 
 
 def _within(root, path):
@@ -122,28 +119,24 @@ class Repository(object):
                 return pack.at(offset, chain)
         raise GitError('object %s is not in the repository' % sha[:12])
 
-    def read(self, sha):
+    def read(self, sha, kind=None):
         """The object ``sha`` as dulwich parses it (a Blob, Tree, Commit or Tag;
-        GitError: not there, not it, or damaged)."""
-        kind, body = self.raw(sha)
+        GitError: not there, not it, damaged, or not of ``kind``, b'tree'...)."""
+        number, body = self.raw(sha)
         try:
-            found = ShaFile.from_raw_string(kind, body)
+            found = ShaFile.from_raw_string(number, body)
         except DAMAGED + (ObjectFormatException,) as exc:
             raise GitError('object %s is damaged (%s)' % (sha[:12], exc))
         if found.id.decode('ascii') != sha:       # its name, computed from its bytes
             raise GitError('object %s does not hold what its name says' % sha[:12])
-        return found
-
-    def _of_kind(self, sha, kind):
-        found = self.read(sha)
-        if found.type_name != kind:
+        if kind is not None and found.type_name != kind:
             raise GitError('%s is a %s, not a %s' % (sha[:12], found.type_name.decode(),
                                                      kind.decode()))
         return found
 
     def blob(self, sha):
         """The bytes of the blob ``sha``."""
-        return self._of_kind(sha, b'blob').as_raw_string()
+        return self.read(sha, b'blob').as_raw_string()
 
     def ref(self, name, depth=0):
         """The commit a reference (``HEAD``, ``refs/...``) names, or None (unborn).
@@ -199,14 +192,14 @@ class Repository(object):
 
     def peel(self, sha):
         """The commit an annotated tag points at (a commit: itself)."""
-        kind, peeled = peel_sha(self, sha.encode('ascii'))
+        peeled = peel_sha(self, sha.encode('ascii'))[1]
         if peeled.type_name != b'commit':
             raise GitError('%s is a %s, not a commit' % (sha[:12], peeled.type_name.decode()))
         return peeled.id.decode('ascii')
 
     def commit(self, sha):
         """The :class:`Commit` ``sha`` (its parents none at a shallow clone's end)."""
-        found = self._of_kind(sha, b'commit')
+        found = self.read(sha, b'commit')
         tree = (found.tree or b'').decode('ascii', 'replace')
         if not HEX.match(tree):
             raise GitError('commit %s has no tree' % sha[:12])
@@ -221,4 +214,4 @@ class Repository(object):
     def tree(self, sha):
         """[(mode, name, sha)] of a tree object."""
         return [(entry.mode, entry.path.decode('utf-8', 'replace'), entry.sha.decode('ascii'))
-                for entry in self._of_kind(sha, b'tree').iteritems()]
+                for entry in self.read(sha, b'tree').iteritems()]

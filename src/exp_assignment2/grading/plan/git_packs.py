@@ -1,18 +1,15 @@
 """A git packfile read with dulwich's index and deltas, under the grader's
-bounds (no ROS, no ``git``): the objects of
-:mod:`~exp_assignment2.grading.plan.git_objects`' repositories that ``git gc``
-or a clone packed, each whole or a delta on another (``OFS_DELTA``: by its
-place in the pack; ``REF_DELTA``: by its name).
+bounds (no ROS, no ``git``): the objects ``git gc`` or a clone packed, each
+whole or a delta on another (``OFS_DELTA``: by its place in the pack;
+``REF_DELTA``: by its name).
 
-dulwich finds an object in the index (versions 1 and 2) and applies deltas.
-Two steps stay here because dulwich takes a pack at its word:
-its ``unpack_object`` inflates an object whole before it compares the size
-the pack declares (a few kilobytes of a hostile pack inflate to gigabytes),
-so the inflation here stops one byte past the declared size; and its C
-``apply_delta`` allocates the size a delta declares and reads a copy's
-offset bytes without looking for the delta's end, so a delta's sizes and
-the completeness of its commands are checked before it is applied. A chain
-of deltas is bounded, and its base is where the pack can hold it.
+Two steps stay here because dulwich takes a pack at its word: its
+``unpack_object`` inflates an object whole before it compares the size the
+pack declares (a few kilobytes of a hostile pack inflate to gigabytes), so
+the inflation here stops one byte past it; and its C ``apply_delta``
+allocates the size a delta declares and reads a copy's offset bytes without
+looking for the delta's end, so those are checked first. A chain of deltas
+is bounded, and its base is where the pack can hold it.
 """
 import mmap
 import os
