@@ -35,7 +35,7 @@ def add_args(parser):
 def step(args, out, log, read, submissions, copies):
     """The similarity report of ``submissions`` (their ``copies``) into ``out``,
     with ``read`` (planning.read_settings'); never changes a verdict or a score."""
-    try:
+    def make():
         teacher, chosen, _ = read
         templates = similarity_run.templates_of(args, teacher, os.path.abspath(args.submissions))
         runs_dir = os.path.join(out, 'runs')     # a grading's: the packages its runs built
@@ -46,16 +46,12 @@ def step(args, out, log, read, submissions, copies):
                                'runs_dir': runs_dir if os.path.isdir(runs_dir) else None,
                                'template_prints': template_prints.of_profile(
                                    chosen.get('profile_source'))})
-    except ImportError as exc:      # copydetect: tools/run grade installs it
-        log('similarity: not made: %s' % exc)
-        return USAGE
-    except (TeacherFileError, SubmissionError, profiles.ProfileError) as exc:
-        log('similarity: %s' % exc)
-        return USAGE
+        return 0
+    try:
+        return _asked('similarity', log, make)
     except Exception as exc:    # noqa: B902 -- a fault of the similarity's costs no grade
         log('similarity: failed: %s: %s' % (type(exc).__name__, exc))
         return 1
-    return 0
 
 
 def fingerprint_template(args, log):
@@ -66,10 +62,11 @@ def fingerprint_template(args, log):
         log('--fingerprint-template: give the template with --template DIR (repeatable)')
         return USAGE
     if not os.path.isfile(path):
-        log('--fingerprint-template: %s is not a profile file (start one with "base: dog" '
-            'and a name:)' % path)
+        log('--fingerprint-template: %s is not a profile file (start one with "base: dog")'
+            % path)
         return USAGE
-    try:
+
+    def write():
         templates = similarity_run.templates_of(args, {}, os.getcwd())
         with Copies() as copies:
             keys = similarity_run.template_keys(similarity_run.Reader(copies), templates)[0]
@@ -77,12 +74,19 @@ def fingerprint_template(args, log):
             log('--fingerprint-template: no code to fingerprint in %s' % ', '.join(templates))
             return USAGE
         template_prints.write_into(path, keys, templates)
+        log('%d fingerprints of %s written into %s: a grading with this profile leaves them '
+            'out of every share' % (len(keys), ', '.join(templates), path))
+        return 0
+    return _asked('--fingerprint-template', log, write)
+
+
+def _asked(what, log, action):
+    """``action()``'s exit code, or USAGE with one line for what cannot be
+    done as asked: a mistake in it, or copydetect missing."""
+    try:
+        return action()
     except ImportError as exc:      # copydetect: tools/run grade installs it
-        log('--fingerprint-template: %s' % exc)
-        return USAGE
+        log('%s: not made: %s' % (what, exc))
     except (TeacherFileError, SubmissionError, profiles.ProfileError) as exc:
-        log('--fingerprint-template: %s' % exc)
-        return USAGE
-    log('%d fingerprints of %s written into %s: a grading with this profile leaves them out '
-        'of every share' % (len(keys), ', '.join(templates), path))
-    return 0
+        log('%s: %s' % (what, exc))
+    return USAGE
