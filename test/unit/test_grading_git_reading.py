@@ -3,6 +3,7 @@
 never what reads a configuration or runs hooks; an object or a delta larger
 than it may be, or than it says, is refused before it is made."""
 import os
+import struct
 import subprocess
 import sys
 import zlib
@@ -80,3 +81,17 @@ def test_a_loose_object_larger_than_the_bound_is_refused(tmp_path, monkeypatch):
     monkeypatch.setattr(git_objects, 'MAX_OBJECT', 1 << 20)
     with pytest.raises(GitError, match='larger than 1 MB'):
         Repository(path).blob(sha)
+
+
+def test_an_index_that_claims_more_objects_than_it_holds_is_one_line(tmp_path):
+    """Its fan-out's last count is the objects it claims: a hash's prefix is
+    looked for among those it holds, then one line."""
+    path = str(tmp_path / 'repo')
+    make_repository(path, ['2025-03-01T10:00:00+01:00'])
+    folder = os.path.join(path, '.git', 'objects', 'pack')
+    with open(os.path.join(folder, 'pack-forged.idx'), 'wb') as f:
+        f.write(b'\xfftOc' + struct.pack('>I', 2) + struct.pack('>256I', *[0xffffffff] * 256))
+    with open(os.path.join(folder, 'pack-forged.pack'), 'wb') as f:
+        f.write(b'PACK' + bytes(28))
+    with pytest.raises(GitError, match='its index is damaged'):
+        Repository(path).resolve('abcd')
