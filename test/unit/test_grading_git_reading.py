@@ -9,7 +9,7 @@ import sys
 import zlib
 
 import pytest
-from dulwich.objects import Blob
+from dulwich.objects import Blob, ShaFile
 
 from git_helpers import make_repository
 from exp_assignment2.grading.plan import git_objects
@@ -83,15 +83,34 @@ def test_a_loose_object_larger_than_the_bound_is_refused(tmp_path, monkeypatch):
         Repository(path).blob(sha)
 
 
-def test_an_index_that_claims_more_objects_than_it_holds_is_one_line(tmp_path):
-    """Its fan-out's last count is the objects it claims: a hash's prefix is
-    looked for among those it holds, then one line."""
+@pytest.mark.parametrize('count', [5, 0xffffffff])
+def test_an_index_that_claims_more_objects_than_it_holds_is_one_line(tmp_path, count):
+    """Its fan-out's counts are the objects it claims: dulwich's search of
+    them (in C) and its list of their names stop at the end, in one line."""
     path = str(tmp_path / 'repo')
     make_repository(path, ['2025-03-01T10:00:00+01:00'])
     folder = os.path.join(path, '.git', 'objects', 'pack')
     with open(os.path.join(folder, 'pack-forged.idx'), 'wb') as f:
-        f.write(b'\xfftOc' + struct.pack('>I', 2) + struct.pack('>256I', *[0xffffffff] * 256))
+        f.write(b'\xfftOc' + struct.pack('>I', 2) + struct.pack('>256I', *[count] * 256) +
+                b'\x01' * 50)
     with open(os.path.join(folder, 'pack-forged.pack'), 'wb') as f:
         f.write(b'PACK' + bytes(28))
     with pytest.raises(GitError, match='its index is damaged'):
         Repository(path).resolve('abcd')
+    with pytest.raises(GitError, match='its index is damaged'):
+        Repository(path).blob('ab' * 20)
+
+
+def test_a_name_a_tag_gives_is_never_a_path(tmp_path):
+    """A hostile tag's object: dulwich keeps the bytes it says, the grader
+    reads only an object's name."""
+    path = str(tmp_path / 'repo')
+    make_repository(path, ['2025-03-01T10:00:00+01:00'])
+    tag = b'object ../../../../etc/passwd\ntype commit\ntag v1\n\nx\n'
+    sha = ShaFile.from_raw_string(4, tag).id.decode()
+    loose = os.path.join(path, '.git', 'objects', sha[:2], sha[2:])
+    os.makedirs(os.path.dirname(loose), exist_ok=True)
+    with open(loose, 'wb') as f:
+        f.write(zlib.compress(b'tag %d\0' % len(tag) + tag))
+    with pytest.raises(GitError, match='is not the name of an object'):
+        Repository(path).peel(sha)

@@ -99,6 +99,8 @@ class Repository(object):
 
     def raw(self, sha, chain=0):
         """(type number, bytes) of the object ``sha``, not yet checked against its name."""
+        if not HEX.match(sha):      # a name a tag or a commit gave: never a path
+            raise GitError('%r is not the name of an object' % sha[:80])
         loose = os.path.join(self.objects, sha[:2], sha[2:])
         if os.path.lexists(loose):     # "TYPE SIZE\0" and the bytes, inflated at most so far
             raw, what = self.read_file(loose), 'object %s' % sha[:12]
@@ -188,7 +190,7 @@ class Repository(object):
 
     def __getitem__(self, sha):
         """The object ``sha`` (hex bytes), as dulwich's functions on a store ask for it."""
-        return self.read(sha.decode('ascii'))
+        return self.read(sha.decode('ascii', 'replace'))
 
     def peel(self, sha):
         """The commit an annotated tag points at (a commit: itself)."""
@@ -207,7 +209,8 @@ class Repository(object):
         time, zone = found.commit_time, found.commit_timezone
         if time is None:
             time, zone = found.author_time, found.author_timezone
-        parents = [] if sha in self.shallow else [p.decode('ascii') for p in found.parents]
+        parents = [] if sha in self.shallow else [
+            p.decode('ascii', 'replace') for p in found.parents]
         subject = (found.message or b'').decode('utf-8', 'replace').strip().split('\n')[0][:200]
         return Commit(sha, tree, parents, time or 0, (zone or 0) // 60, subject)
 

@@ -22,8 +22,10 @@ from dulwich.pack import OFS_DELTA, REF_DELTA, apply_delta, load_pack_index_file
 TYPES = (1, 2, 3, 4)               # commit, tree, blob, tag: dulwich's type numbers
 MAX_OBJECT = 200 * 1024 * 1024     # bytes of one object (unpacking.MAX_UNPACKED's size)
 MAX_CHAIN = 100                    # deltas on deltas before the repository is refused
-# what dulwich raises on bytes that are not what they should be
-DAMAGED = (ApplyDeltaError, AssertionError, IndexError, KeyError, ValueError, struct.error)
+# what dulwich raises on bytes that are not what they should be (its C search of an
+# index: OverflowError for a count past 2**31, TypeError for a name cut short)
+DAMAGED = (ApplyDeltaError, ArithmeticError, AssertionError, IndexError, KeyError, TypeError,
+           ValueError, struct.error)
 
 
 class GitError(Exception):
