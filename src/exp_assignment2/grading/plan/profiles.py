@@ -42,9 +42,9 @@ DEFAULTS = {'title': '', 'world_commands': [], 'delay': 5, 'cpu_per_run': 1.0,
             'arena': None, 'camera_fov': None}
 
 
-HEAD_METRICS = ('head_turn_near_ball', 'looks_both_ways')
+HEAD_METRICS = ('head_turn_near_ball', 'looks_both_ways')     # checks that judge the head
 # the course's template as fingerprints, for the similarity report alone (load)
-TEMPLATE_PRINTS = 'template_fingerprints'     # checks that judge the head
+TEMPLATE_PRINTS = 'template_fingerprints'
 
 
 class ProfileError(Exception):

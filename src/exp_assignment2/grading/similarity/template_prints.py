@@ -27,7 +27,7 @@ import yaml
 from exp_assignment2.grading.plan import profiles
 from exp_assignment2.grading.similarity.fingerprints import SCHEME
 
-KEY = 'template_fingerprints'
+KEY = profiles.TEMPLATE_PRINTS
 LINE = 76                   # base64 characters a line of ``keys``
 MARK = '# written by grade --fingerprint-template: hashes of the template\'s code, no code'
 
