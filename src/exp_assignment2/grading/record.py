@@ -92,6 +92,8 @@ FIELDS = (
     ('launch_errors', 'the nodes roslaunch could not start'),
     ('keyboard', 'where a node waited for keyboard input nobody typed'),
     ('roles', 'the robot, head, camera and ball judged, each with why (judge.roles)'),
+    ('release_evidence', "what a failed run shows of its ROS release (judge.steering): "
+                         'whether another release may be the cause, and why'),
     # the teacher's side's part
     ('teacher', 'what the teacher\'s side added once the run came back: TEACHER_FIELDS'),
 )
@@ -99,6 +101,8 @@ TEACHER_FIELDS = (
     ('workers', 'the workers that ran it, in order (more than one: run again)'),
     ('notes', "the teacher's side's notes (a run done again after its worker was lost)"),
     ('cut', 'what its worker did not send back whole'),
+    ('release_next', "the next ROS release the course allows: {'release', 'tried', 'why'} "
+                     '(run.dispatch.in_next_release)'),
     ('planned', "what the teacher's side planned it from: {'spec': the digest of its RunSpec, "
                 "'content': of its submission's files, 'spec_fields': the RunSpec's fields} "
                 '(run.resume: a grading started again keeps it only when they are the same)'),

@@ -10,6 +10,8 @@ from exp_assignment2.grading.judge import logs as logs_
 from exp_assignment2.grading.judge import metrics
 from exp_assignment2.grading.judge.python_errors import python_errors
 from exp_assignment2.grading.judge import roles as roles_
+from exp_assignment2.grading.judge import steering
+from exp_assignment2.grading.plan import profile_keys
 
 
 # the facts a record says itself of an end before or outside its run: the
@@ -43,6 +45,7 @@ class Seen(object):
         self._checks = checks      # a list, or a function judging (roles, checks) when asked
         self._roles = None
         self.keyboard = []         # [{'where': FILE:LINE, 'command'}]: reads nobody answered
+        self.release_evidence = None    # judge.steering's, once the checks are judged
 
     def _judge(self):
         if callable(self._checks):
@@ -223,6 +226,9 @@ def gather(work, record_dir, result, profile):
     def judged():
         trace = metrics.Trace.from_record(record_dir, seen.errors)
         found = roles_.find(trace, profile)
+        # what the run shows of its release, read before another release is tried
+        seen.release_evidence = steering.evidence(
+            trace, found, profile_keys.with_shared({}, profile), seen.errors)
         return found, metrics.evaluate(trace, profile, found)
     seen._checks = judged if states else None
     return seen

@@ -236,6 +236,8 @@ def judge(work, record_dir, result, profile):
             out['keyboard'] = seen.keyboard
     if verdict in ('passed', 'failed_checks'):
         out['checks'] = seen.checks
+        if verdict == 'failed_checks' and seen.release_evidence is not None:
+            out['release_evidence'] = seen.release_evidence
     elif verdict in ('crashed', 'timed_out') and seen.checks is not None:
         # judged from the ground truth recorded until the end: the points earned so far
         out['checks'] = seen.checks

@@ -1,7 +1,8 @@
 """The ROS release each submission ran in, on its pages (no ROS): of a
 submission run in several releases (its checks failed in the first), the
 runs of the better one count (:func:`counted`), and the page shows each
-release tried, its verdict and score, and why (:mod:`~exp_assignment2.grading.plan.ros_release`)."""
+release tried, its verdict and score, and why (:mod:`~exp_assignment2.grading.plan.ros_release`);
+of one whose failure showed nothing of its release, why the next was not tried."""
 
 from exp_assignment2.grading.plan import ros_release
 from exp_assignment2.grading.judge import scores
@@ -38,6 +39,10 @@ def releases_section(run, tried, clean=str):
         return []
     parts = ['<p>ROS release: <b>%s</b> (%s)</p>' % (_e(run['release']),
                                                     _e(clean(run.get('release_why'))))]
+    decision = (run.get('teacher') or {}).get('release_next') or {}
+    if decision and not decision.get('tried'):
+        parts.append('<p>Not run again in ROS %s, the next the course allows: %s</p>' % (
+            _e(decision.get('release')), _e(clean(decision.get('why')))))
     if tried:
         parts.append('<table><tr><th>ROS release tried</th><th>verdict</th><th>score</th>'
                      '<th>why</th><th></th></tr>%s</table>' % ''.join(

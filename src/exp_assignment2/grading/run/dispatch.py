@@ -22,19 +22,41 @@ STOP_WAIT = 30.0        # s the runs stopped now have to end (their sandboxes ki
 
 def in_next_release(run):
     """The run again in the next ROS release whose plugins behave otherwise
-    for it, when its checks failed in a release it was not told (None: no
-    other to try). ros_release.py; the better run counts (report.py)."""
+    for it, when its checks failed in a release it was not told and the run
+    shows the release was the cause (judge.steering: it turned away from the
+    ball it saw, or went nowhere with its drive commanded, or failed to look a
+    frame up); None: no other to try, or nothing points at the release (a
+    failure of its own fails the same in any). The decision is kept in the
+    run's teacher part (``release_next``). ros_release.py; the better run counts
+    (report.py)."""
     spec, result = run.spec, run.result or {}
     if not spec.releases_next or result.get('verdict') != 'failed_checks':
         return None
+    release = spec.releases_next[0]
+    evidence = result.get('release_evidence') or {}
+    tried = bool(evidence.get('release', True))
+    _keep_decision(run, {'release': release, 'tried': tried,
+                         'why': evidence.get('why') or 'no evidence of the run was read'})
+    if not tried:
+        return None
     data = spec.to_dict()
-    release = data['releases_next'][0]
     data.update(release=release, releases_next=data['releases_next'][1:],
                 label='%s-%s' % (spec.label, release),
                 release_why='its checks failed in ROS %s (%s): run again in %s, whose Gazebo '
-                            'plugins behave otherwise for it' % (
-                                spec.release, spec.release_why, release))
+                            'plugins behave otherwise for it (%s)' % (
+                                spec.release, spec.release_why, release,
+                                evidence.get('why') or 'the run was not read'))
     return Run(run.settings, RunSpec.from_dict(data))
+
+
+def _keep_decision(run, decision):
+    """The next release's decision in the run's teacher part (its page says it)."""
+    try:
+        kept = record.load(run.record) or {}
+        teacher = dict(kept.get('teacher') or {}, release_next=decision)
+        run.result = record.write(run.record, teacher=teacher)
+    except OSError:
+        pass
 
 
 def grade(runs, cluster, progress, copies, stopping=None, resume=None, admission=None):
@@ -61,15 +83,19 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None, admission
         futures[future] = run
         run.starts_before = len(cluster.started.get(run.label) or [])   # an earlier attempt's
         pending.add(future)
-        admission.started(run.label, run.settings.real_time_factor)
+        admission.started(run.label, run.settings.real_time_factor, run.spec.name)
         return future
 
     def admit():
-        """Send what may start now: the queued runs in turn, then, once
-        nothing else runs or waits, the starved ones, one at a time."""
-        while queued and not stopping.asked and \
-                admission.may_start(queued[0].settings.real_time_factor):
-            send(queued.pop(0))
+        """Send what may start now: each queued run, in turn, that fits the cores
+        free (a cheap one beside a dear one), then, once nothing else runs or
+        waits, the starved ones, one at a time."""
+        for run in list(queued):
+            if stopping.asked:
+                break
+            if admission.may_start(run.settings.real_time_factor, run.spec.name):
+                queued.remove(run)
+                send(run)
         if starved_runs and not queued and not pending and not stopping.asked:
             run, factor = starved_runs.pop(0)
             run.notes = [STARVED_NOTE % factor]
@@ -81,6 +107,7 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None, admission
         kept = resume.keep(run) if resume is not None else None
         if kept is not None:
             run.result, run.state = kept, 'done'
+            admission.counted(kept, run.spec.name)      # what it cost counts from the start
             follow(run)
             return
         todo.append(run)
@@ -93,7 +120,7 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None, admission
 
     def receive(run, future):
         _received(run, future, cluster)
-        if admission.ended(run.label, run.result) and run.state == 'done' and \
+        if admission.ended(run.label, run.result, run.spec.name) and run.state == 'done' and \
                 not run.notes and not stopping.asked:
             starved_runs.append((run, starved(run.result)))
             return          # followed once run again
