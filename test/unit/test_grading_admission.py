@@ -37,8 +37,25 @@ def test_a_run_is_counted_at_the_profile_s_cost_then_at_the_class_s_measured_one
     assert admission.may_start(1.0)             # 0.94 counted for b, + 0.6
     for cores in (0.5, 0.62, 0.64):
         admission.costs.append(cores)
-    assert admission.per_run() == pytest.approx(0.62)    # the upper quartile of 4
+    assert admission.per_run() == pytest.approx(0.62)    # the median of 4 (the upper one)
     assert admission.most_at_once() == 3 and admission.most_at_once(2.0) == 1
+
+
+def test_a_submission_s_runs_count_at_what_its_own_code_costs():
+    """Its releases, repeats and episodes run the same code: a run of a measured
+    submission is counted at its own cost, another's at the class's median."""
+    admission = Admission(2, 0.94, 8)
+    admission.counted(ran(1.7), 'busy_loops')
+    admission.counted(ran(0.3), 'quiet')
+    admission.counted(ran(1.0), 'middle')
+    assert admission.per_run('busy_loops') == pytest.approx(1.7)
+    assert admission.per_run('quiet') == pytest.approx(0.3)
+    assert admission.per_run('new') == pytest.approx(1.0)      # the class's median
+    admission.started('busy_loops-melodic', 1.0, 'busy_loops')
+    assert admission.may_start(1.0, 'quiet')                   # 1.7 + 0.3 <= 2
+    assert not admission.may_start(1.0, 'middle')              # 1.7 + 1.0 > 2
+    admission.counted(ran(0.9), 'busy_loops')                  # its dearest run counts
+    assert admission.per_run('busy_loops') == pytest.approx(1.7)
 
 
 def test_the_first_run_always_starts_and_as_fast_as_possible_takes_every_core():
@@ -132,6 +149,21 @@ def test_runs_start_as_their_measured_cost_lets_and_a_starved_one_runs_again_alo
         assert json.load(f)['notes'] == [
             'run again: its first run was starved (0.91 of real time)']
     assert all(not record.notes(r.result) for r in runs if r.label != 'b')
+
+
+def test_a_cheap_run_starts_beside_a_dear_one_where_the_next_in_line_would_not_fit(
+        tmp_path, no_wait):
+    """dear (1.6 cores) runs; mid (1.0) is next in line and does not fit beside it;
+    cheap (0.3), behind it, does, and starts at once (first fit)."""
+    facts = {'dear': [ran(1.6)], 'mid': [ran(1.0)], 'cheap': [ran(0.3)]}
+    cluster = CostlyCluster(facts)
+    runs = runs_of(tmp_path, ['dear', 'mid', 'cheap'])
+    admission = Admission(2, 0.94, 8)
+    for name, facts_of in facts.items():
+        admission.counted(facts_of[0], name)        # measured before (a resumed grading's)
+    dispatch.grade(runs, cluster, Progress(cluster), copies=None, admission=admission)
+    assert cluster.keys[:2] == [('dear', 1), ('cheap', 1)]
+    assert ['cheap', 'dear'] in cluster.at_once and ['dear', 'mid'] not in cluster.at_once
 
 
 def test_a_run_starved_twice_is_kept_as_it_came_the_second_time(tmp_path, no_wait):

@@ -3,12 +3,16 @@
 A fixed ``--jobs`` from a figure measured once on one submission starved the
 runs of a class that cost more (a run below 0.95 of its real-time factor is
 judged while its code ran slower than it was written for). Here a run starts
-only when the cores it will need are free: each run is counted at the cores
-the class's runs are measured to cost, starting from the profile's
-``cpu_per_run`` and then from the runs that finished (their CPU s per
-simulated s, from their control group: the record's ``cpu_s`` and
-``sim_time``), at the real-time factor it is run at; ``--jobs`` is only the
-most at once. The first run always starts, whatever it is expected to cost.
+only when the cores it will need are free, each counted at what its own
+submission's code costs: the submission's runs measured so far (its releases,
+repeats and episodes run the same code), else the class's median of the runs
+that finished, else the profile's ``cpu_per_run`` (their CPU s per simulated
+s, from their control group: the record's ``cpu_s`` and ``sim_time``), at the
+real-time factor it is run at. The queue is taken in order, each run that
+fits the free cores started (first fit: a cheap run starts beside a dear one
+where the next in line would not fit); ``--jobs`` is only the most at once.
+The first run always starts, whatever it is expected to cost. A resumed
+grading counts the costs of the runs it keeps from the start.
 
 A run that was starved all the same (the machine was busier than measured: a
 submission that costs more than the others, another program) is run again
@@ -20,7 +24,7 @@ after the others there too.
 
 STARVED = 0.95            # of the factor asked: below it, a run was starved
 MIN_SIM = 10.0            # simulated s a run must have lasted for its cost to count
-QUANTILE = 0.75           # the runs' cost counted: more than most of the class's
+QUANTILE = 0.5            # an unmeasured submission's run counted at the class's median
 STARVED_NOTE = 'run again: its first run was starved (%.2f of real time)'
 
 
@@ -55,44 +59,54 @@ class Admission(object):
     def __init__(self, cores, first, most):
         self.cores, self.first, self.most = cores, float(first), max(1, int(most))
         self.costs = []             # measured, CPU s per simulated s
+        self.mine = {}              # submission -> its runs' measured costs
         self.running = {}           # label -> cores counted for it
 
-    def per_run(self):
-        """CPU s per simulated s counted for a run now: the profile's figure,
-        then the QUANTILE of the measured runs'."""
+    def per_run(self, name=None):
+        """CPU s per simulated s counted for a run of submission ``name``: what its own
+        runs measured (the most of them: its releases, repeats and episodes run the same
+        code), else the class's median, else the profile's figure."""
+        if name is not None and self.mine.get(name):
+            return max(self.mine[name])
         if not self.costs:
             return self.first
         ordered = sorted(self.costs)
         return ordered[int(round(QUANTILE * (len(ordered) - 1)))]
 
-    def need(self, rtf):
+    def need(self, rtf, name=None):
         """Cores a run at real-time factor ``rtf`` is counted at (0, as fast
         as possible: every core)."""
         if self.cores is None:
             return 0.0
         if not rtf:
             return float(self.cores)
-        return self.per_run() * rtf
+        return self.per_run(name) * rtf
 
-    def may_start(self, rtf):
-        """May a run at factor ``rtf`` start now?"""
+    def may_start(self, rtf, name=None):
+        """May a run of ``name`` at factor ``rtf`` start now (with what runs)?"""
         if not self.running:
             return True
         if len(self.running) >= self.most:
             return False
-        return self.cores is None or sum(self.running.values()) + self.need(rtf) <= \
+        return self.cores is None or sum(self.running.values()) + self.need(rtf, name) <= \
             self.cores + 1e-9
 
-    def started(self, label, rtf):
-        self.running[label] = self.need(rtf)
+    def started(self, label, rtf, name=None):
+        self.running[label] = self.need(rtf, name)
 
-    def ended(self, label, result):
-        """A run came back: its cost counted. True when it is to be run again
-        (starved, the first time)."""
-        self.running.pop(label, None)
+    def counted(self, result, name=None):
+        """A finished run's cost counted (one kept by a resumed grading too)."""
         measured = cost(result)
         if measured is not None:
             self.costs.append(measured)
+            if name is not None:
+                self.mine.setdefault(name, []).append(measured)
+
+    def ended(self, label, result, name=None):
+        """A run came back: its cost counted. True when it is to be run again
+        (starved, the first time)."""
+        self.running.pop(label, None)
+        self.counted(result, name)
         return starved(result) is not None
 
     def most_at_once(self, rtf=1.0):
