@@ -270,3 +270,23 @@ def test_waiting_for_the_keyboard_and_a_file_line_alone_are_no_errors():
     text = ('[original-env] waited for keyboard input at scripts/command_request.py:37\n'
             '  File "x.py", line 3\n    not followed by an error\nall done\n')
     assert python_errors.python_errors([('logs/command-0.log', text)]) == []
+
+
+def test_a_module_a_node_could_not_import_is_named_for_what_it_is():
+    """Never a bare ImportError: the submission's own package the run did not build,
+    or a module the original environment lacks (its page's first error says which)."""
+    text = ('Traceback (most recent call last):\n  File "a.py", line 3, in <module>\n'
+            '    import %s\nModuleNotFoundError: No module named \'%s\'\n')
+    own = python_errors.name_missing(python_errors.tracebacks(
+        text % ('pet_msgs.msg', 'pet_msgs'), 'a'), {'pet_msgs', 'pet'})
+    assert own[0]['summary'] == ("ModuleNotFoundError: No module named 'pet_msgs': the "
+                                 "submission's own package pet_msgs, not built for this run "
+                                 "(see its Packages)")
+    lacking = python_errors.name_missing(python_errors.tracebacks(
+        text % ('pcl', 'pcl'), 'a'), {'pet'})
+    assert lacking[0]['summary'].endswith("missing from the original environment: neither "
+                                          "this machine's ROS nor the package's stand-ins "
+                                          "have pcl (docs/original_env_supplies.md)")
+    other = python_errors.tracebacks('Traceback (most recent call last):\n  x\nKeyError: 1\n',
+                                     'a')
+    assert python_errors.name_missing(other, set()) == other

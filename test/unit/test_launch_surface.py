@@ -228,6 +228,11 @@ def test_the_packages_are_installed_executable_once_per_content(tmp_path):
     for path in launch_packages.EXECUTABLES + ('xacro/xacro.py',):
         assert os.access(os.path.join(first, path), os.X_OK), path
     assert os.path.isfile(os.path.join(first, 'gazebo_ros', 'launch', 'empty_world.launch'))
+    # a display launch file's $(find urdf_tutorial)/urdf.rviz (a real class's): there
+    # where Debian has no urdf_tutorial
+    if not launch_packages.installed('urdf_tutorial'):
+        assert 'Class: rviz/RobotModel' in open(os.path.join(
+            first, 'urdf_tutorial', 'urdf.rviz')).read()
     assert launch_packages.install(str(ws), str(source)) == first
     (source / 'xacro' / 'xacro').write_text('#!/usr/bin/python3\n')
     second = launch_packages.install(str(ws), str(source))

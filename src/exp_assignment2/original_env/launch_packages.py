@@ -1,6 +1,7 @@
 """Put the launch-surface packages (stand_in_packages/: gazebo_ros, xacro,
-controller_manager, image_transport, media_export, and rqt_image_view and
-smach_viewer where no real one is installed) where roslaunch can run them, and
+controller_manager, image_transport, media_export, and rqt_image_view,
+smach_viewer and urdf_tutorial where no real one is installed) where roslaunch
+can run them, and
 return that directory: ``install(WORKSPACE)`` ->
 WORKSPACE/original_env_packages/<hash>.
 
@@ -26,9 +27,10 @@ EXECUTABLES = ('gazebo_ros/scripts/gzserver', 'gazebo_ros/scripts/debug',
                'image_transport/scripts/republish', 'rqt_image_view/scripts/rqt_image_view',
                'smach_viewer/scripts/smach_viewer.py')
 ALIASES = {'xacro/xacro.py': 'xacro/xacro'}
-# GUI tools a user's launch file may start: stand-ins only where ROS has none
-# (Debian has neither); a real one is never shadowed
-IF_MISSING = ('rqt_image_view', 'smach_viewer')
+# GUI tools (and urdf_tutorial's rviz configuration) a user's launch file may start or
+# find: stand-ins only where ROS has none (Debian has none of them); a real one is never
+# shadowed
+IF_MISSING = ('rqt_image_view', 'smach_viewer', 'urdf_tutorial')
 
 
 def installed(name, environ=None):

@@ -10,6 +10,7 @@ QUIET_ENDINGS = ('KeyboardInterrupt', 'ROSInterruptException', 'rospy.exceptions
                  # handshake (a probe, a client that exited): nothing the node's code did
                  'ROSHandshakeException: connection from sender terminated before handshake')
 TRACEBACK = re.compile(r'^Traceback \(most recent call last\):')
+NO_MODULE = re.compile(r"^(?:ModuleNotFoundError|ImportError): No module named '?([\w.]+)'?")
 # a script Python cannot compile: '  File "x.py", line 3', its line, carets, then the error
 SYNTAX_AT = re.compile(r'^\s*File "(?P<file>[^"]+)", line (?P<line>\d+)\s*$')
 SYNTAX_ERROR = re.compile(r'^(?:SyntaxError|IndentationError|TabError): ')
@@ -60,3 +61,22 @@ def python_errors(logs):
             seen.add(key)
             errors.append(error)
     return errors
+
+
+def name_missing(errors, own):
+    """The errors with each module a node could not import named for what it is: one
+    of the submission's own packages (``own``, its package names) that the run did not
+    build, or one the original environment does not have (a student's machine had it,
+    this one has neither it nor a stand-in): never a bare ImportError on the page."""
+    out = []
+    for error in errors:
+        found = NO_MODULE.match(error['summary'])
+        if found:
+            top = found.group(1).split('.')[0]
+            said = ('the submission\'s own package %s, not built for this run (see its '
+                    'Packages)' % top if top in own else
+                    'missing from the original environment: neither this machine\'s ROS nor '
+                    'the package\'s stand-ins have %s (docs/original_env_supplies.md)' % top)
+            error = dict(error, summary='%s: %s' % (error['summary'], said))
+        out.append(error)
+    return out

@@ -8,7 +8,7 @@ import re
 
 from exp_assignment2.grading.judge import logs as logs_
 from exp_assignment2.grading.judge import metrics
-from exp_assignment2.grading.judge.python_errors import python_errors
+from exp_assignment2.grading.judge.python_errors import name_missing, python_errors
 from exp_assignment2.grading.judge import roles as roles_
 from exp_assignment2.grading.judge import steering
 from exp_assignment2.grading.plan import profile_keys
@@ -185,8 +185,9 @@ def gather(work, record_dir, result, profile):
                 sim_time=(result.get('truth') or {}).get('sim_time') or 0.0,
                 duration=float(result.get('duration') or profile['duration']),
                 memory_limit_mb=profile['memory_limit_mb'],
-                errors=python_errors(
+                errors=name_missing(python_errors(
                     [(rel, text) for rel, text in run_logs if rel not in simulators]),
+                    {p.get('name') for p in result.get('packages') or []}),
                 display_error=next((e['error'] for e in events if e.get('event') == 'display'
                                     and e.get('error')), None),
                 ended_at=result.get('ended_at'))
