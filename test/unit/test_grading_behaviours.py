@@ -321,13 +321,13 @@ def test_wandering_while_the_ball_is_out_of_sight():
 
 
 def test_a_short_time_out_of_sight_asks_for_fewer_places():
-    """The ball behind the robot for 65 s: one place each 30 s is asked (2, not the
+    """The ball behind the robot for 75 s: one place each 35 s is asked (2, not the
     profile's 6); it drove to 4, and passes; a whole run out of sight asks for 6."""
-    short = trace(line(0, 8, 0, 40), lambda t: (-8, 0, 0.5) if t < 65 else (9, 0, 0.5),
+    short = trace(line(0, 8, 0, 40), lambda t: (-8, 0, 0.5) if t < 75 else (9, 0, 0.5),
                   until=100)
     got = metrics.evaluate(short, dict(DOG, checks=[check('wanders')]), ROLES)[0]
     assert (got['value'], got['passed'], got['threshold']) == (4, True, '>= 2')
-    assert got['limits'] == {'min': 2} and 'time for 2 at one each 30 s' in got['detail']
+    assert got['limits'] == {'min': 2} and 'time for 2 at one each 35 s' in got['detail']
     long = trace(line(0, 8, 0, 40), lambda t: (-8, 0, 0.5), until=240)
     got = metrics.evaluate(long, dict(DOG, checks=[check('wanders')]), ROLES)[0]
     assert (got['value'], got['passed'], got['threshold']) == (4, False, '>= 6')
