@@ -9,8 +9,9 @@ is graded with the defaults (``tools/run grade``, the options after CLASS given
 to it), then each submission's verdict and check results are compared with the
 verdicts a person signed running it by hand (``--hand``, default
 ``bench/real_class.yaml``): a verdict agrees when the verdict is the same and
-every check the person judged (``passed``, ``failed``, ``not judged``; ``any``
-where either is right) came out the same. It prints the agreement ("8 of 10
+every check the person judged (``passed``, ``failed``, ``not judged``; a list of
+them where chance decides between them, ``any`` where it decides all) came out
+as they said. It prints the agreement ("8 of 10
 verdicts as by hand") and each disagreement with its check, the grader's figure
 and detail, and the person's reason. ``--report-only`` compares the gradings
 already in ``--out`` without running anything.
@@ -51,19 +52,26 @@ def compare(hand, graded):
     out = []
     checks = {c['name']: c for c in graded.get('checks') or []}
     for name, said in (hand.get('checks') or {}).items():
-        if said == 'any':
-            continue
         check = checks.get(name)
         got = outcome(check) if check else 'not run'
-        if got != said:
-            out.append((name, said, got, '%s | %s' % (
+        if got not in accepted(said):
+            out.append((name, ' or '.join(accepted(said)), got, '%s | %s' % (
                 check.get('value'), check.get('detail') or '') if check else ''))
-    chance = any(said == 'any' for said in (hand.get('checks') or {}).values())
+    chance = any(len(accepted(said)) > 1 for said in (hand.get('checks') or {}).values())
     if graded['verdict'] != hand['verdict'] and not (
             chance and not out and {graded['verdict'], hand['verdict']} <= set(JUDGED)):
         out.insert(0, ('verdict', hand['verdict'], graded['verdict'],
                        graded.get('reason') or ''))
     return out
+
+
+def accepted(said):
+    """The outcomes a person's word for a check admits: one, a list of those chance
+    decides between (``[passed, not judged]``: it passes whenever the run gives it the
+    occasion), or ``any``."""
+    if said == 'any':
+        return list(OUTCOMES[:3])
+    return list(said) if isinstance(said, list) else [said]
 
 
 def load_hand(path):
@@ -72,8 +80,8 @@ def load_hand(path):
         data = yaml.safe_load(f)
     for name, hand in data['submissions'].items():
         for check, said in (hand.get('checks') or {}).items():
-            if said not in OUTCOMES:
-                raise SystemExit('%s: %s: %s: %r is not one of %s' % (
+            if said != 'any' and not set(accepted(said)) <= set(OUTCOMES[:3]):
+                raise SystemExit('%s: %s: %s: %r is not one of %s, or a list of them' % (
                     path, name, check, said, ', '.join(OUTCOMES)))
     return data['submissions']
 
