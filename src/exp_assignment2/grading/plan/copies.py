@@ -15,7 +15,7 @@ import os
 import shutil
 
 from exp_assignment2.grading import scratch as grader_scratch
-from exp_assignment2.grading.plan.unpacking import SubmissionError, unpack
+from exp_assignment2.grading.plan.submissions import SubmissionError, unpack
 
 
 class Copy(object):

@@ -16,7 +16,7 @@ teacher chose that commit on purpose (``submissions: NAME: commit:`` or
 import datetime
 import math
 
-from exp_assignment2.grading.plan.teacher_file import TeacherFileError
+from exp_assignment2.grading.teacher_error import TeacherFileError
 
 DAY = 86400.0
 LATE_KEYS = ('per_day', 'max')

@@ -12,9 +12,13 @@ builds, is :mod:`~exp_assignment2.grading.plan.packages`' to say.
 """
 import os
 import re
+import tarfile
+import zipfile
 
+from exp_assignment2.grading.plan import git_entries
 from exp_assignment2.grading.plan.unpacking import MAX_UNPACKED, SKIPPED, SubmissionError, \
-    Unpacked, copy_dir, unpack  # noqa: F401 (the grader's one door to them)
+    Unpacked, copy_dir  # noqa: F401 (the grader's one door to them)
+from exp_assignment2.grading.plan.unpacking import unpack_tar, unpack_zip
 
 ARCHIVE_SUFFIXES = ('.zip', '.tar.gz', '.tgz', '.tar', '.tar.bz2', '.tbz2', '.tar.xz', '.txz')
 OTHER_ARCHIVES = ('.rar', '.7z', '.gz', '.bz2', '.xz', '.zst')
@@ -49,8 +53,7 @@ def is_package(path):
 def _kind(path):
     lower = path.lower()
     if os.path.isdir(path):
-        from exp_assignment2.grading.plan.git_entries import is_repository
-        return 'git' if is_repository(path) else 'dir'
+        return 'git' if git_entries.is_repository(path) else 'dir'
     if lower.endswith('.zip'):
         return 'zip'
     if any(lower.endswith(s) for s in ARCHIVE_SUFFIXES):
@@ -128,3 +131,27 @@ def package_name(package_dir):
     except OSError:
         match = None
     return match.group(1) if match else os.path.basename(package_dir)
+
+
+def unpack(submission, dest, limit=MAX_UNPACKED):
+    """The submission's files in ``dest`` (created): an :class:`Unpacked`;
+    SubmissionError when it cannot be taken at all (nothing is written
+    outside ``dest``)."""
+    dest = os.path.abspath(dest)
+    os.makedirs(dest, exist_ok=True)
+    out = Unpacked(dest)
+    try:
+        if submission.kind == 'dir':
+            copy_dir(submission.path, dest, limit, out)
+        elif submission.kind == 'zip':
+            unpack_zip(submission.path, dest, out, limit)
+        elif submission.kind == 'tar':
+            unpack_tar(submission.path, dest, out, limit)
+        elif submission.kind == 'git':      # its commit's tree, nothing of .git run
+            git_entries.export(submission, dest, out, limit)
+        else:
+            raise SubmissionError(submission.why or 'not a submission')
+    except (zipfile.BadZipFile, tarfile.TarError, EOFError, OSError, ValueError,
+            NotImplementedError, RuntimeError) as exc:
+        raise SubmissionError('the archive does not unpack: %s' % (exc,))
+    return out.find_root()

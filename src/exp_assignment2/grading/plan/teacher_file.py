@@ -11,6 +11,8 @@ import os
 
 import yaml
 
+from exp_assignment2.grading.plan import deadlines
+from exp_assignment2.grading.teacher_error import TeacherFileError
 from exp_assignment2.sim.releases import RELEASES
 
 TOP_KEYS = {'profile': str, 'duration': (int, float), 'commands': list, 'delay': (int, float),
@@ -30,10 +32,6 @@ RELEASE_NAMES = tuple(RELEASES)      # the releases the simulator can play
 # a command of grading.yaml written as a mapping: its line, when, from where
 START_KEYS = {'run': str, 'after': (int, float), 'at': (int, float), 'cwd': str,
               'input': (list, dict)}     # lines to type: the original-code environment's keyboard
-
-
-class TeacherFileError(Exception):
-    """One line naming the mistake in grading.yaml."""
 
 
 def _check_keys(data, allowed, where):
@@ -129,7 +127,6 @@ def read_teacher_file(path):
             if not isinstance(settings, dict):
                 raise TeacherFileError('%s: submissions: %s: must be a mapping' % (name, who))
             _check_keys(settings, ONE_KEYS, '%s: submissions: %s' % (name, who))
-            from exp_assignment2.grading.plan import deadlines
             deadlines.check_own(settings, '%s: submissions: %s' % (name, who))
         except TeacherFileError as exc:
             data['errors'][str(who)] = str(exc)
@@ -141,7 +138,6 @@ def _check_term(data, name):
     """The term's keys: dates and the late policy (deadlines.py), ``students:``
     (each submission's identifier in the gradebooks: a string, or a number) and
     ``gradebook:``."""
-    from exp_assignment2.grading.plan import deadlines
     deadlines.check(data, name)
     for who, ident in (data.get('students') or {}).items():
         if isinstance(ident, bool) or not isinstance(ident, (str, int)) or not str(ident).strip():

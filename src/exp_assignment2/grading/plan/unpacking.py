@@ -10,7 +10,8 @@ an absolute path: GNU tar strips or skips them too), a fifo, a device, a
 file that cannot be read. What catkin builds (``build/``, ``devel/``,
 ``install/``) and version control are never copied. Only two things refuse
 a submission: an archive that does not unpack at all, and one past the size
-or file-count limit.
+or file-count limit. ``submissions.unpack`` takes an entry by its kind (a git
+repository through the git reader, which uses the limits here).
 """
 import os
 import re
@@ -135,7 +136,7 @@ def _write(src, target, budget):
             out.write(chunk)
 
 
-def _unpack_zip(path, dest, out, limit):
+def unpack_zip(path, dest, out, limit):
     budget = _Budget(limit, 'the archive unpacks to')
     with zipfile.ZipFile(path) as archive:
         members = archive.infolist()
@@ -164,7 +165,7 @@ def _unpack_zip(path, dest, out, limit):
     _make_links(dest, links, out)
 
 
-def _unpack_tar(path, dest, out, limit):
+def unpack_tar(path, dest, out, limit):
     budget = _Budget(limit, 'the archive unpacks to')
     links = []
     with tarfile.open(path, 'r:*') as archive:
@@ -246,28 +247,3 @@ def copy_dir(path, dest, limit=MAX_UNPACKED, out=None):
         dirnames[:] = [d for d in dirnames if d in walked]
     _make_links(os.path.abspath(dest), links, out)
     return out
-
-
-def unpack(submission, dest, limit=MAX_UNPACKED):
-    """The submission's files in ``dest`` (created): an :class:`Unpacked`;
-    SubmissionError when it cannot be taken at all (nothing is written
-    outside ``dest``)."""
-    dest = os.path.abspath(dest)
-    os.makedirs(dest, exist_ok=True)
-    out = Unpacked(dest)
-    try:
-        if submission.kind == 'dir':
-            copy_dir(submission.path, dest, limit, out)
-        elif submission.kind == 'zip':
-            _unpack_zip(submission.path, dest, out, limit)
-        elif submission.kind == 'tar':
-            _unpack_tar(submission.path, dest, out, limit)
-        elif submission.kind == 'git':      # its commit's tree, nothing of .git run
-            from exp_assignment2.grading.plan import git_entries
-            git_entries.export(submission, dest, out, limit)
-        else:
-            raise SubmissionError(submission.why or 'not a submission')
-    except (zipfile.BadZipFile, tarfile.TarError, EOFError, OSError, ValueError,
-            NotImplementedError, RuntimeError) as exc:
-        raise SubmissionError('the archive does not unpack: %s' % (exc,))
-    return out.find_root()
