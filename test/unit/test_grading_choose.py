@@ -176,9 +176,9 @@ def test_the_plan_reads_an_archive_on_the_teachers_side(tmp_path, monkeypatch):
     submission's settings is carried in its spec, not patched onto a run."""
     import argparse
     import zipfile
-    from exp_assignment2.grading.plan import build_deps
+    from exp_assignment2.grading.entry import build_deps
     from exp_assignment2.grading.plan import planning
-    from exp_assignment2.grading.plan.copies import Copies
+    from exp_assignment2.grading.entry.copies import Copies
     monkeypatch.setattr(build_deps, 'available_debian', lambda: set())
     monkeypatch.setattr(build_deps, 'install', lambda names, log: None)
     monkeypatch.setattr(launch_nodes, 'provided_packages', lambda: {'gazebo_ros'})

@@ -4,12 +4,12 @@ written (exp_assignment2.grading.plan.planning, runner, run.dispatch, cli)."""
 import argparse
 import os
 
-from exp_assignment2.grading.plan import build_deps
+from exp_assignment2.grading.entry import build_deps
 from exp_assignment2.grading import cli
 from exp_assignment2.grading.plan import launch_nodes
 from exp_assignment2.grading.plan import planning
 from exp_assignment2.grading.plan import profiles
-from exp_assignment2.grading.plan.copies import Copies
+from exp_assignment2.grading.entry.copies import Copies
 from exp_assignment2.grading.run import dispatch
 from exp_assignment2.grading.run.runner import Run, RunSettings
 from exp_assignment2.grading.plan.spec import RunSpec

@@ -1,5 +1,5 @@
 """A git repository of the submissions folder is read in plain Python
-with dulwich under the grader's rules (grading/plan/git_objects.py,
+with dulwich under the grader's rules (grading/entry/git_objects.py,
 git_packs.py, git_entries.py): its commit's tree as ``git archive`` gives it,
 loose or packed (deltas, index versions 1 and 2), and nothing of its
 configuration or hooks ever run (the bounds: test_grading_git_reading.py)."""
@@ -11,11 +11,11 @@ import tarfile
 import pytest
 
 from git_helpers import commit, git, make_hostile, make_repository, write
-from exp_assignment2.grading.plan import git_entries
-from exp_assignment2.grading.plan.copies import Copies
-from exp_assignment2.grading.plan.git_objects import GitError, Repository
-from exp_assignment2.grading.plan.submissions import Submission, discover, unpack
-from exp_assignment2.grading.plan.unpacking import SubmissionError
+from exp_assignment2.grading.entry import git_entries
+from exp_assignment2.grading.entry.copies import Copies
+from exp_assignment2.grading.entry.git_objects import GitError, Repository
+from exp_assignment2.grading.entry.submissions import Submission, discover, unpack
+from exp_assignment2.grading.entry.unpacking import SubmissionError
 from exp_assignment2.grading.run import tasks
 
 DATES = ['2025-03-01T10:00:00+01:00', '2025-03-02T10:00:00+01:00',

@@ -1,5 +1,5 @@
 """dulwich reads a student's git objects under the grader's bounds
-(grading/plan/git_objects.py, git_packs.py): only its readers are loaded,
+(grading/entry/git_objects.py, git_packs.py): only its readers are loaded,
 never what reads a configuration or runs hooks; an object or a delta larger
 than it may be, or than it says, is refused before it is made."""
 import os
@@ -12,9 +12,9 @@ import pytest
 from dulwich.objects import Blob, ShaFile
 
 from git_helpers import make_repository
-from exp_assignment2.grading.plan import git_objects
-from exp_assignment2.grading.plan.git_objects import GitError, Repository
-from exp_assignment2.grading.plan.git_packs import MAX_OBJECT, inflate, patch
+from exp_assignment2.grading.entry import git_objects
+from exp_assignment2.grading.entry.git_objects import GitError, Repository
+from exp_assignment2.grading.entry.git_packs import MAX_OBJECT, inflate, patch
 
 SRC = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(
     __file__)))), 'src')
@@ -23,7 +23,7 @@ SRC = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspa
 def test_only_dulwich_readers_are_loaded():
     """Its Repo reads .git/config, its hooks module runs hooks, its porcelain
     and index check out with filters, its client and config start commands."""
-    code = ('import sys; from exp_assignment2.grading.plan import git_entries; '
+    code = ('import sys; from exp_assignment2.grading.entry import git_entries; '
             'print(" ".join(m for m in sys.modules if m.startswith("dulwich")))')
     loaded = subprocess.run([sys.executable, '-c', code], env=dict(os.environ, PYTHONPATH=SRC),
                             stdout=subprocess.PIPE, check=True,

@@ -17,8 +17,9 @@ import pytest
 pytest.importorskip('copydetect')
 distributed = pytest.importorskip('distributed')
 from exp_assignment2.grading import cli  # noqa: E402
-from exp_assignment2.grading.plan import build_deps, launch_nodes, planning  # noqa: E402
-from exp_assignment2.grading.plan import copies, git_entries, unpacking  # noqa: E402
+from exp_assignment2.grading.entry import build_deps  # noqa: E402
+from exp_assignment2.grading.plan import launch_nodes, planning  # noqa: E402
+from exp_assignment2.grading.entry import copies, git_entries, unpacking  # noqa: E402
 from exp_assignment2.grading.report import index  # noqa: E402
 from exp_assignment2.grading.run import tasks  # noqa: E402
 from git_helpers import make_repository  # noqa: E402

@@ -1,9 +1,9 @@
 """A submission's packages, what a run builds of them, and what they need
-from Debian (exp_assignment2.grading.plan.packages, build_deps)."""
+from Debian (exp_assignment2.grading.entry.packages, build_deps)."""
 import os
 
-from exp_assignment2.grading.plan import build_deps
-from exp_assignment2.grading.plan import packages
+from exp_assignment2.grading.entry import build_deps
+from exp_assignment2.grading.entry import packages
 
 MANIFEST = '''<package format="2"><name>%s</name><version>0.0.1</version>
 %s</package>'''

@@ -116,7 +116,7 @@ def test_the_readme_at_the_root_then_the_packages(tmp_path):
 def test_a_build_lines_packages_are_built_and_said_so(tmp_path):
     """resolve's build_packages reach packages.choose: a package only a build
     line names is built for that reason; one the main package uses says so."""
-    from exp_assignment2.grading.plan import packages
+    from exp_assignment2.grading.entry import packages
     manifest = '<package format="2"><name>%s</name><version>0.0.1</version>%s</package>'
     for name, depends in (('dog', '<depend>dog_msgs</depend>'), ('dog_msgs', ''),
                           ('dog_tools', '')):

@@ -7,7 +7,8 @@ import os
 
 import pytest
 
-from exp_assignment2.grading.plan import assignment, packages as packages_
+from exp_assignment2.grading.entry import packages as packages_
+from exp_assignment2.grading.plan import assignment
 from exp_assignment2.grading.plan.commands import command_word, readme_entries
 from exp_assignment2.grading.plan.planning import resolve
 from exp_assignment2.grading.plan.shell import words

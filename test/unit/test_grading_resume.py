@@ -12,7 +12,7 @@ import pytest
 
 from exp_assignment2.grading import record
 from exp_assignment2.grading.plan import profiles
-from exp_assignment2.grading.plan.copies import Copies
+from exp_assignment2.grading.entry.copies import Copies
 from exp_assignment2.grading.plan.spec import RunSpec
 from exp_assignment2.grading.run import resume as resume_
 from exp_assignment2.grading.run import sandbox, tasks

@@ -16,8 +16,8 @@ pytest.importorskip('copydetect')
 import similarity_fixtures  # noqa: E402
 from exp_assignment2.grading import cli  # noqa: E402
 from exp_assignment2.grading.plan import profiles  # noqa: E402
-from exp_assignment2.grading.plan.copies import Copies  # noqa: E402
-from exp_assignment2.grading.plan.submissions import discover  # noqa: E402
+from exp_assignment2.grading.entry.copies import Copies  # noqa: E402
+from exp_assignment2.grading.entry.submissions import discover  # noqa: E402
 from exp_assignment2.grading.similarity import fingerprints as similarity  # noqa: E402
 from exp_assignment2.grading.similarity import pairs  # noqa: E402
 from exp_assignment2.grading.similarity import step  # noqa: E402

@@ -144,7 +144,7 @@ def test_ctrl_c_twice_stops_the_running_ones_and_keeps_no_record_of_them(tmp_pat
 
 
 def test_a_resumed_grading_sends_only_what_it_does_not_keep(tmp_path, no_wait):
-    from exp_assignment2.grading.plan.copies import Copies
+    from exp_assignment2.grading.entry.copies import Copies
     from exp_assignment2.grading.run.resume import Resume
     for name in ('ann', 'ben'):
         os.makedirs(str(tmp_path / name))

@@ -1,4 +1,4 @@
-"""The grader reads a teacher's folder safely (exp_assignment2.grading.plan.submissions)."""
+"""The grader reads a teacher's folder safely (exp_assignment2.grading.entry.submissions)."""
 import io
 import os
 import tarfile
@@ -6,8 +6,8 @@ import zipfile
 
 import pytest
 
-from exp_assignment2.grading.plan import packages
-from exp_assignment2.grading.plan.submissions import SubmissionError, discover, unpack
+from exp_assignment2.grading.entry import packages
+from exp_assignment2.grading.entry.submissions import SubmissionError, discover, unpack
 
 PACKAGE_XML = '<package format="2"><name>%s</name><version>0.0.1</version></package>'
 

@@ -5,9 +5,9 @@ import tarfile
 
 import pytest
 
-from exp_assignment2.grading.plan.copies import Copies
+from exp_assignment2.grading.entry.copies import Copies
 from exp_assignment2.grading.run import tasks
-from exp_assignment2.grading.plan.submissions import Submission, SubmissionError
+from exp_assignment2.grading.entry.submissions import Submission, SubmissionError
 
 
 def test_a_run_directory_comes_back_bounded(tmp_path):

@@ -26,10 +26,10 @@ from exp_assignment2.grading.run.dispatch import grade
 from exp_assignment2.grading.run.resume import Resume
 from exp_assignment2.grading.run.stopping import Stopping
 from exp_assignment2.grading.plan.commands import TeacherFileError
-from exp_assignment2.grading.plan.copies import Copies
+from exp_assignment2.grading.entry.copies import Copies
 from exp_assignment2.grading.progress import Progress
 from exp_assignment2.grading.run.runner import Run, RunSettings
-from exp_assignment2.grading.plan.submissions import SubmissionError
+from exp_assignment2.grading.entry.submissions import SubmissionError
 from exp_assignment2.grading.similarity import command as similarity_command
 
 # 4: the report is written, but some runs could not be graded (grader_error: run them again)
@@ -76,7 +76,7 @@ def parse_args(argv):
     similarity_command.add_args(parser)
     args = parser.parse_args(argv)
     if args.deadline is not None:
-        from exp_assignment2.grading.plan import deadlines
+        from exp_assignment2.grading.entry import deadlines
         try:
             args.deadline = deadlines.parse_time(args.deadline, '--deadline')
         except TeacherFileError as exc:
@@ -152,7 +152,7 @@ def default_out(submissions):
 
 def main(argv=None):
     """The command line: grading.yaml read once, the folder discovered once,
-    each submission copied once on the teacher's side (plan.copies), the
+    each submission copied once on the teacher's side (entry.copies), the
     report's index written once, after the similarity step."""
     args = parse_args(sys.argv[1:] if argv is None else argv)
     log = lambda text: print('[grade] ' + text, file=sys.stderr, flush=True)  # noqa: E731
@@ -270,7 +270,7 @@ def similarity_only(args, out, log):
     """``--similarity-only``: grading.yaml read and the folder discovered for
     the similarity step alone; the index of a grading's report there written
     again with its column."""
-    from exp_assignment2.grading.plan.submissions import discover
+    from exp_assignment2.grading.entry.submissions import discover
     try:
         _outside(os.path.abspath(args.submissions), out)
         read = planning.read_settings(args)

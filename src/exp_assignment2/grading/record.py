@@ -49,7 +49,7 @@ FIELDS = (
     ('repeat_command', 'the command line that runs it again by hand'),
     ('limits', "the sandbox's memory and process limits, as set"),
     ('git', "a git repository's commit graded, how it was chosen, the commits after it, days "
-            'late and points off (plan.git_entries.choose)'),
+            'late and points off (entry.git_entries.choose)'),
     ('episode', "which of the submission's episodes it is: index, the scripted ball's seed, "
                 'visibility (plan.episodes), or None'),
     # how it went

@@ -10,7 +10,7 @@ import os
 
 from exp_assignment2.grading import record
 from exp_assignment2.grading.judge import verdicts
-from exp_assignment2.grading.plan import build_deps
+from exp_assignment2.grading.entry import build_deps
 
 # what the verdict adds to a run's record (verdicts.judge), and nothing else
 JUDGED = ('verdict', 'reason', 'errors', 'error_count', 'died', 'launch_errors', 'keyboard',

@@ -15,7 +15,7 @@ import os
 import re
 import shlex
 
-from exp_assignment2.grading.plan import packages as packages_
+from exp_assignment2.grading.entry import packages as packages_
 
 HEADING = re.compile(r'^(#{1,6})\s+(.*?)\s*#*\s*$|^(.+)\n(?:=+|-+)\s*$', re.M)
 

@@ -39,7 +39,7 @@ import re
 from exp_assignment2.grading.plan import own_names
 from exp_assignment2.grading.plan.commands import ros_line, ros_parts
 from exp_assignment2.grading.plan.shell import words as shell_words
-from exp_assignment2.grading.plan.reading import read_text
+from exp_assignment2.grading.entry.reading import read_text
 
 SIMULATOR_TYPES = {'gazebo', 'gzserver', 'gzclient', 'debug', 'stageros'}
 INIT_PY = re.compile(r'init_node\(\s*[\'"]([^\'"]+)[\'"]([^)]*)\)')

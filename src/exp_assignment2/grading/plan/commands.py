@@ -17,7 +17,7 @@ import re
 from exp_assignment2.grading.plan import own_names
 from exp_assignment2.grading.plan import shell
 from exp_assignment2.grading.plan import start_script
-from exp_assignment2.grading.plan.reading import read_text
+from exp_assignment2.grading.entry.reading import read_text
 # grading.yaml's reader, where the grader has always found it
 from exp_assignment2.grading.plan.teacher_file import (  # noqa: F401 (the door to them)
     TeacherFileError, read_teacher_file)

@@ -10,7 +10,7 @@ import difflib
 import os
 import re
 
-from exp_assignment2.grading.plan.reading import read_text
+from exp_assignment2.grading.entry.reading import read_text
 
 SKIPPED = {'build', 'devel', 'install', 'logs', '__pycache__'}
 MAX_FILES = 20000          # a submission's files looked at, at most

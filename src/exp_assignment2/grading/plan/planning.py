@@ -10,7 +10,7 @@ submission the one place its commands are decided, in this order:
 then the profile's ``world_commands`` before them, and ``{package}`` (the
 submission's package name) and ``{sim}`` (this package's name beside it) put
 in. Each submission is read from the teacher's side's one copy of it
-(:mod:`~exp_assignment2.grading.plan.copies`: an archive unpacked, a
+(:mod:`~exp_assignment2.grading.entry.copies`: an archive unpacked, a
 directory copied, with ``submissions.unpack``'s limits): its README, scripts
 and launch files. The result is a
 :class:`~exp_assignment2.grading.plan.spec.RunSpec` per run. grading.yaml is
@@ -20,23 +20,23 @@ read once (:func:`read_settings`) and the folder discovered once
 import os
 
 from exp_assignment2.grading.plan import assignment
-from exp_assignment2.grading.plan import build_deps
+from exp_assignment2.grading.entry import build_deps
 from exp_assignment2.grading.plan import defaults
-from exp_assignment2.grading.plan import deadlines
+from exp_assignment2.grading.entry import deadlines
 from exp_assignment2.grading.plan import episodes as episodes_
-from exp_assignment2.grading.plan import git_entries
+from exp_assignment2.grading.entry import git_entries
 from exp_assignment2.grading.plan import launch_nodes
 from exp_assignment2.grading.plan import profiles
 from exp_assignment2.grading.plan import ros_release
 from exp_assignment2.grading.plan import starts
-from exp_assignment2.grading.plan import packages as packages_
+from exp_assignment2.grading.entry import packages as packages_
 from exp_assignment2.grading.plan.choose import Context, aliases, choose
 from exp_assignment2.grading.plan.commands import TeacherFileError, read_teacher_file, \
     readme_entries, readme_texts
 from exp_assignment2.grading.paths import PACKAGE
 from exp_assignment2.grading.record import traceback_line
 from exp_assignment2.grading.plan.spec import RunSpec, settings
-from exp_assignment2.grading.plan.submissions import SubmissionError, discover
+from exp_assignment2.grading.entry.submissions import SubmissionError, discover
 
 OWN_NAME, SIM_PACKAGE = 'exp_assignment2', 'exp_assignment2_sim'   # see overlay/build.py
 

@@ -22,7 +22,7 @@ import os
 import re
 
 from exp_assignment2.sim import releases as sim_releases
-from exp_assignment2.grading.plan.reading import read_text
+from exp_assignment2.grading.entry.reading import read_text
 
 NAMES = tuple(sim_releases.RELEASES)
 # a release's name, or what only that release had: its Gazebo, its Ubuntu

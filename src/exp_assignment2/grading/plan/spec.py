@@ -31,7 +31,7 @@ class RunSpec(object):
     teacher's environment's), ``release_why``, and ``releases_next``: those to run it in when its
     checks fail in this one
     (:mod:`~exp_assignment2.grading.plan.ros_release`); ``git``: the commit a git repository is
-    graded at, and why (:func:`~exp_assignment2.grading.plan.git_entries.choose`), or None;
+    graded at, and why (:func:`~exp_assignment2.grading.entry.git_entries.choose`), or None;
     ``episode``: which of the submission's episodes it is (``index``, the ball's ``seed``,
     ``visibility``) and ``ball_script``: the course the simulator plays for the ball in it
     (None: the student's ball node moves it; :mod:`~exp_assignment2.grading.plan.episodes`)."""

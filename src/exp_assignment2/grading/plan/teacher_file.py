@@ -11,7 +11,7 @@ import os
 
 import yaml
 
-from exp_assignment2.grading.plan import deadlines
+from exp_assignment2.grading.entry import deadlines
 from exp_assignment2.grading.teacher_error import TeacherFileError
 from exp_assignment2.sim.releases import RELEASES
 

@@ -8,7 +8,7 @@ date and subject, how it was chosen, the deadline, the commits after it (not
 graded), and the days late with the points off when the teacher graded a
 later commit on purpose.
 """
-from exp_assignment2.grading.plan.git_entries import summary as in_words
+from exp_assignment2.grading.entry.git_entries import summary as in_words
 from exp_assignment2.grading.report.html import e
 
 

@@ -1,6 +1,6 @@
 """What a page says of a submission's packages (no ROS): each package found,
 where, and whether the run built it, with why (``packages`` of a run's
-record: :mod:`exp_assignment2.grading.plan.packages`). Shown when the submission
+record: :mod:`exp_assignment2.grading.entry.packages`). Shown when the submission
 holds more than one, or the one it holds is not at its top."""
 from exp_assignment2.grading.report.html import e as _e
 

@@ -192,7 +192,7 @@ class Cluster(object):
 def payload(run, version, copies, attempt=1):
     """What a task needs to run one Run anywhere (see tasks.run_task): its
     specification as a plain dict, and the submission's bytes (packed from
-    its copy in ``copies``, plan.copies.Copies); ``attempt`` 2 for a run
+    its copy in ``copies``, entry.copies.Copies); ``attempt`` 2 for a run
     sent again (run.admission: starved)."""
     kind, data = tasks.pack_submission(run.submission, copies)
     return {'spec': run.spec.to_dict(), 'packed_kind': kind, 'data': data,

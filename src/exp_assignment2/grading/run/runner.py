@@ -15,11 +15,11 @@ import uuid
 
 from exp_assignment2.grading import record
 from exp_assignment2.grading.judge import again
-from exp_assignment2.grading.plan import build_deps
-from exp_assignment2.grading.plan import packages as packages_
+from exp_assignment2.grading.entry import build_deps
+from exp_assignment2.grading.entry import packages as packages_
 from exp_assignment2.grading.paths import ROOT
 from exp_assignment2.grading.plan import starts
-from exp_assignment2.grading.plan.submissions import Submission, SubmissionError, package_name, \
+from exp_assignment2.grading.entry.submissions import Submission, SubmissionError, package_name, \
     unpack
 from exp_assignment2.grading.run import ending
 from exp_assignment2.grading.run import monitor

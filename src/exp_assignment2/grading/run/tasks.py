@@ -2,7 +2,7 @@
 either: :mod:`exp_assignment2.grading.run.cluster` hands these to Dask).
 
 The submission travels as an archive (``pack_submission``, of the teacher's
-side's copy of it: plan.copies); the worker runs it in a scratch directory
+side's copy of it: entry.copies); the worker runs it in a scratch directory
 of its own (``run_task``) and sends back the run's
 directory as an archive (``pack_run``): its record, its logs, its build
 log and its windows' pictures, bounded in size (what was cut is said beside
@@ -21,7 +21,7 @@ from exp_assignment2.grading import scratch as grader_scratch
 from exp_assignment2.grading.paths import PACKAGE_XML
 from exp_assignment2.grading.run.runner import Run, RunSettings
 from exp_assignment2.grading.plan.spec import RunSpec
-from exp_assignment2.grading.plan.submissions import Submission
+from exp_assignment2.grading.entry.submissions import Submission
 
 RETURN_LIMIT = 64 * 1024 * 1024        # bytes of a run's directory sent back
 FILE_LIMIT = 8 * 1024 * 1024           # bytes of one log sent back (its start and end)
@@ -48,7 +48,7 @@ def package_version():
 
 def pack_submission(submission, copies):
     """(kind, bytes): an archive as it is; a directory as a .tar.gz of the
-    teacher's side's copy of it (``copies``, plan.copies.Copies: links inside
+    teacher's side's copy of it (``copies``, entry.copies.Copies: links inside
     it kept, none out of it: no file of the teacher's machine travels with a
     submission; SubmissionError when it cannot be taken); a git repository as
     a .tar.gz of its copy, its chosen commit's tree."""

@@ -5,8 +5,8 @@ exit code is grade's: 0 made, 2 a mistake in what was asked, 1 it failed
 import os
 
 from exp_assignment2.grading.plan import profiles
-from exp_assignment2.grading.plan.copies import Copies
-from exp_assignment2.grading.plan.submissions import SubmissionError
+from exp_assignment2.grading.entry.copies import Copies
+from exp_assignment2.grading.entry.submissions import SubmissionError
 from exp_assignment2.grading.plan.teacher_file import TeacherFileError
 from exp_assignment2.grading.similarity import step as similarity_run
 from exp_assignment2.grading.similarity import template_prints

@@ -6,7 +6,7 @@ A repository that carries the next assignment with vendored public packages
 does: nobody's copying. Only the packages a run builds count: after a
 grading, those its runs' records say were built (``packages``); without runs
 (``--similarity-only``, a reference), as the plan decides
-(:mod:`~exp_assignment2.grading.plan.packages`): the package the run is about,
+(:mod:`~exp_assignment2.grading.entry.packages`): the package the run is about,
 those its commands start (grading.yaml's, else the README's, else the
 profile's), those the README builds, and every package of the submission they
 use. Launch files are not read in a sandbox here: a command the README offers
@@ -15,7 +15,7 @@ as an alternative counts too.
 from exp_assignment2.grading import record
 from exp_assignment2.grading.plan import assignment
 from exp_assignment2.grading.plan import launch_nodes
-from exp_assignment2.grading.plan import packages as packages_
+from exp_assignment2.grading.entry import packages as packages_
 from exp_assignment2.grading.plan import planning
 
 

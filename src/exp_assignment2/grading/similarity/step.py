@@ -1,5 +1,5 @@
 """The similarity step of ``grade`` (issue 42): every submission of the folder
-read from the teacher's side's copy of it (plan.copies: archives unpacked
+read from the teacher's side's copy of it (entry.copies: archives unpacked
 with ``submissions.unpack``'s limits, a git repository exported at the commit
 graded), its graded packages fingerprinted
 (:mod:`~exp_assignment2.grading.similarity.graded`), compared with each other
@@ -10,9 +10,9 @@ of a student's is executed, only read).
 """
 import os
 
-from exp_assignment2.grading.plan import git_entries
+from exp_assignment2.grading.entry import git_entries
 from exp_assignment2.grading.plan.commands import TeacherFileError
-from exp_assignment2.grading.plan.submissions import Submission, discover
+from exp_assignment2.grading.entry.submissions import Submission, discover
 from exp_assignment2.grading.similarity import fingerprints as similarity
 from exp_assignment2.grading.similarity import graded
 from exp_assignment2.grading.similarity import page as similarity_report
@@ -45,7 +45,7 @@ def references_of(args):
 
 
 class Reader(object):
-    """Reads submissions into fingerprints from their ``copies`` (plan.copies.Copies,
+    """Reads submissions into fingerprints from their ``copies`` (entry.copies.Copies,
     the grading's own). ``settings``: {'teacher', 'profile', 'deadline',
     'runs_dir'}, or None: every code file counts, git repositories at their
     checked-out commit."""
@@ -93,7 +93,7 @@ def run(submissions, out, templates, copies, base_share=0.1, only=None, log=prin
         references=(), settings=None):
     """Compare the folder's ``submissions`` (discovered once, by the grading),
     and each with the ``references`` folders' submissions (each discovered
-    once here), all read from their ``copies`` (plan.copies.Copies), the
+    once here), all read from their ``copies`` (entry.copies.Copies), the
     ``templates`` and the profile's template fingerprints (``settings``'
     ``template_prints``) left out; write the report into ``out``; the Result."""
     reader = Reader(copies, settings)

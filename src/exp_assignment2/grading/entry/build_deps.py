@@ -19,7 +19,7 @@ import re
 import subprocess
 
 from exp_assignment2.original_env.overlay import stand_ins
-from exp_assignment2.grading.plan.reading import read_text
+from exp_assignment2.grading.entry.reading import read_text
 
 MAX_PER_SUBMISSION = 40       # Debian packages one submission may ask for
 DEBIAN_NAME = re.compile(r'^[a-z0-9][a-z0-9+.-]+$')
@@ -83,7 +83,7 @@ def available_debian():
 
 def resolve(built, provided, known):
     """({'debian': [names], 'unresolved': {package: [keys]}, 'notes': [...]})
-    for the built :class:`~exp_assignment2.grading.plan.packages.Package` list: ``provided``, the
+    for the built :class:`~exp_assignment2.grading.entry.packages.Package` list: ``provided``, the
     names the run has without installing (ROS packages, the submission's own); ``known``,
     apt's package names."""
     debian, unresolved = [], {}

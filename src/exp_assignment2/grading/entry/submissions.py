@@ -7,18 +7,18 @@ anything else (a loose file, a fifo, a link, another kind of archive) gets a row
 saying why it could not be taken: one entry never costs the teacher the others. A folder that is
 itself a package is one submission (a student checking their own work). The folder is only ever
 read: what is in an entry is put in the run's own directory by
-:mod:`~exp_assignment2.grading.plan.unpacking`; which packages it holds, and which of them a run
-builds, is :mod:`~exp_assignment2.grading.plan.packages`' to say.
+:mod:`~exp_assignment2.grading.entry.unpacking`; which packages it holds, and which of them a run
+builds, is :mod:`~exp_assignment2.grading.entry.packages`' to say.
 """
 import os
 import re
 import tarfile
 import zipfile
 
-from exp_assignment2.grading.plan import git_entries
-from exp_assignment2.grading.plan.unpacking import MAX_UNPACKED, SKIPPED, SubmissionError, \
+from exp_assignment2.grading.entry import git_entries
+from exp_assignment2.grading.entry.unpacking import MAX_UNPACKED, SKIPPED, SubmissionError, \
     Unpacked, copy_dir  # noqa: F401 (the grader's one door to them)
-from exp_assignment2.grading.plan.unpacking import unpack_tar, unpack_zip
+from exp_assignment2.grading.entry.unpacking import unpack_tar, unpack_zip
 
 ARCHIVE_SUFFIXES = ('.zip', '.tar.gz', '.tgz', '.tar', '.tar.bz2', '.tbz2', '.tar.xz', '.txz')
 OTHER_ARCHIVES = ('.rar', '.7z', '.gz', '.bz2', '.xz', '.zst')
@@ -29,7 +29,7 @@ class Submission(object):
     """One entry of the folder: ``name`` (file name less the archive suffix),
     ``path`` (where it is), ``kind`` (``dir``, ``zip``, ``tar``, ``git``: a
     folder that is a git repository, graded at ``commit``, chosen by
-    :func:`~exp_assignment2.grading.plan.git_entries.choose`; or ``other``:
+    :func:`~exp_assignment2.grading.entry.git_entries.choose`; or ``other``:
     ``why`` says what it is and why it cannot be graded)."""
 
     def __init__(self, name, path, kind, why=None, commit=None):

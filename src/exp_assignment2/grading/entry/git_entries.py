@@ -3,7 +3,7 @@
 GitHub Classroom clones a folder of repositories; an entry of the folder with
 a ``.git`` folder is graded at a commit, its tree taken as ``git archive``
 would, without a checkout: no hook, no filter, nothing of its configuration
-(:mod:`~exp_assignment2.grading.plan.git_objects` reads the objects with
+(:mod:`~exp_assignment2.grading.entry.git_objects` reads the objects with
 dulwich). Which
 commit (:func:`choose`), in this order:
 
@@ -26,9 +26,9 @@ import stat
 
 from dulwich.objects import Blob
 
-from exp_assignment2.grading.plan import deadlines
-from exp_assignment2.grading.plan.git_objects import GitError, Repository
-from exp_assignment2.grading.plan.unpacking import MAX_MEMBERS, MAX_UNPACKED, SKIPPED, \
+from exp_assignment2.grading.entry import deadlines
+from exp_assignment2.grading.entry.git_objects import GitError, Repository
+from exp_assignment2.grading.entry.unpacking import MAX_MEMBERS, MAX_UNPACKED, SKIPPED, \
     SubmissionError, _Budget, _make_links
 
 MAX_HISTORY = 100000        # commits walked for the count of those not graded

@@ -10,7 +10,7 @@ objects, packfiles with their ``.idx``), ``shallow``. Never the config, the
 hooks, the index, the attributes, ``objects/info/alternates`` (objects
 borrowed from another folder are missing, as they are from a copy of it).
 
-Debian's dulwich reads them (:mod:`~exp_assignment2.grading.plan.git_packs`
+Debian's dulwich reads them (:mod:`~exp_assignment2.grading.entry.git_packs`
 for the packs): the objects' formats and names (SHA-1), commits, trees and
 tags. Only its modules that read bytes are used (``dulwich.objects``, ``.pack``,
 ``.object_store``'s ``peel_sha``, ``.lru_cache``), none of which starts a
@@ -31,7 +31,7 @@ from dulwich.lru_cache import LRUSizeCache
 from dulwich.object_store import peel_sha
 from dulwich.objects import ShaFile, object_class
 
-from exp_assignment2.grading.plan.git_packs import DAMAGED, MAX_OBJECT, GitError, Pack
+from exp_assignment2.grading.entry.git_packs import DAMAGED, MAX_OBJECT, GitError, Pack
 
 HEX = re.compile(r'^[0-9a-f]{40}$')
 REF_NAME = re.compile(r'^(HEAD|refs/[A-Za-z0-9._/+@-]+)$')

@@ -15,13 +15,13 @@ import os
 import shutil
 
 from exp_assignment2.grading import scratch as grader_scratch
-from exp_assignment2.grading.plan.submissions import SubmissionError, unpack
+from exp_assignment2.grading.entry.submissions import SubmissionError, unpack
 
 
 class Copy(object):
     """One submission's copy: ``folder`` (its own, shown alone to a launch
     file's reader), ``dest`` (the files, in ``folder/src``), and either
-    ``unpacked`` (an :class:`~exp_assignment2.grading.plan.unpacking.Unpacked`:
+    ``unpacked`` (an :class:`~exp_assignment2.grading.entry.unpacking.Unpacked`:
     its root and notes) or ``error`` (the SubmissionError: it cannot be taken;
     ``dest`` holds what was unpacked before it)."""
 

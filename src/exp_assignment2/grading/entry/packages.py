@@ -2,7 +2,7 @@
 
 A student hands in one package, several (a messages package used by a state
 machine's, a robot description), a whole catkin workspace (its ``src/``;
-``build/`` and ``devel/`` are never copied: :mod:`~exp_assignment2.grading.plan.unpacking`) or a
+``build/`` and ``devel/`` are never copied: :mod:`~exp_assignment2.grading.entry.unpacking`) or a
 repository of the course holding several assignments. :func:`find` finds
 every package at any depth, as catkin does (a folder with a
 ``package.xml`` is a package and is not looked into; ``CATKIN_IGNORE``
@@ -18,8 +18,8 @@ import re
 import shlex
 import xml.etree.ElementTree as ElementTree
 
-from exp_assignment2.grading.plan.unpacking import SKIPPED
-from exp_assignment2.grading.plan.reading import READ_LIMIT, read_text
+from exp_assignment2.grading.entry.unpacking import SKIPPED
+from exp_assignment2.grading.entry.reading import READ_LIMIT, read_text
 
 IGNORE_MARKERS = ('CATKIN_IGNORE', 'COLCON_IGNORE', 'AMENT_IGNORE')
 DEPEND_TAGS = ('depend', 'build_depend', 'build_export_depend', 'buildtool_depend',
