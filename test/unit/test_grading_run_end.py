@@ -5,7 +5,8 @@ import pytest
 
 from exp_assignment2.grading.run.ending import (AT_ONCE, BUILD_LIMIT, NOT_RUN, REASONS,
                                                 SIMULATOR_WAIT, STOP_GRACE, TRUTH_QUIET,
-                                                RunFacts, end_reason, stop_overdue)
+                                                RunFacts, end_reason, note_pace, starving,
+                                                stop_overdue)
 
 T0 = 1000.0         # the clock when the run started
 BUILT = T0 + 20.0   # and when the driver said its build ended
@@ -82,7 +83,7 @@ def test_every_reason_is_listed_and_those_at_once_first():
     its commands for all but the first three, and has STOP_GRACE s to (a
     cancelled run is stopped now: the teacher pressed Ctrl-C twice)."""
     assert REASONS[:3] == AT_ONCE == ('driver_exit', 'build_failed', 'cancelled')
-    assert len(set(REASONS)) == 10 and NOT_RUN not in REASONS
+    assert len(set(REASONS)) == 11 and NOT_RUN not in REASONS
     import exp_assignment2.grading.run.ending as ending
     listed = [line.split('``')[1] for line in ending.__doc__.splitlines()
               if line[:3].strip().rstrip('.').isdigit()]
@@ -99,3 +100,25 @@ def test_no_death_but_a_required_nodes_ends_a_run():
     assert end_reason(f, BUILT + 31.0) is None
     f.required_died = 'robot_state_publisher-3'
     assert end_reason(f, BUILT + 31.0) == 'required_node_died'
+
+
+def paced(rate, may_end=True, seconds=80):
+    """A run's facts after ``seconds`` wall s at ``rate`` simulated s a wall s (the
+    ground truth read each half second), asked real time."""
+    f = facts(pace=1.0 if may_end else None, duration=240.0, wall_limit=480.0)
+    for k in range(int(seconds * 2) + 1):
+        f.truth = (rate * k / 2.0, BUILT + k / 2.0)
+        note_pace(f, BUILT + k / 2.0)
+    return f
+
+
+def test_a_first_attempt_that_falls_behind_beside_others_ends_starved():
+    """Kept 0.7 of real time over 30 wall s (after 30 simulated s): ended now, to be run
+    again alone, rather than at its end; at 0.9, or on a second attempt (alone), it
+    runs on."""
+    slow = paced(0.7)
+    assert starving(slow) == pytest.approx(0.7) and end_reason(slow, BUILT + 80) == 'starved'
+    assert end_reason(paced(0.9), BUILT + 80) is None
+    assert end_reason(paced(0.7, may_end=False), BUILT + 80) is None
+    # too early to say: less than 30 simulated s behind it
+    assert starving(paced(0.7, seconds=40)) is None

@@ -78,6 +78,10 @@ CASES = [
                 '(SIGABRT)): qt.qpa.xcb: could not connect to display)'),
     ('no ground truth', dict(ended_by='no_simulator'),
      'grader_error', 'the simulator never reported its ground truth'),
+    ('starved beside other runs', dict(ENDED, ended_by='starved'),
+     'grader_error', 'this machine could not keep it at real time beside other runs: ended at '
+                     '4 of 30 simulated s to be run again alone, and it was not (the grading '
+                     'was stopped)'),
     ('build limit', dict(built=False, build_rc=None, ended_by='build_limit'),
      'timed_out', 'the build ran past its limit'),
     ('wall-clock limit', dict(RUNNING, sim_time=12.4, duration=60.0, ended_by='wall_limit'),

@@ -60,6 +60,8 @@ FIELDS = (
     ('ended_by', 'why the run ended: run.ending.REASONS, or not_run (it never started)'),
     ('ended_at', 'the simulated s then'),
     ('required_node', "roslaunch's name of the required node whose death ended it"),
+    ('starved_factor', 'the real-time factor it kept over the last 30 wall s when it was '
+                       'ended for falling behind beside other runs (ended_by starved)'),
     ('log_sizes', '{log: bytes} at the end'),
     ('truth', 'the ground truth: states, frames, topics, dropped, simulator, refused_peers, '
               'sim_time'),

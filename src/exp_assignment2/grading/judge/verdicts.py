@@ -40,12 +40,14 @@ the grader's own faults first, as in rows 6-8:
     each of 12-16 only when some check was not met on the ground truth until
     then (a system that did its work and then ended is judged by its checks);
 17. ``grader_error``: the simulator never reported its ground truth;
-18. ``timed_out``: the build ran past its limit;
-19. ``timed_out``: the run did not reach its simulated duration within its
+18. ``grader_error``: the run fell behind real time beside other runs and was
+    ended to be run again alone, and was not (the grading stopped first);
+19. ``timed_out``: the build ran past its limit;
+20. ``timed_out``: the run did not reach its simulated duration within its
     wall-clock limit;
-20. ``failed_checks``: some check of the profile failed (the nodes that died
+21. ``failed_checks``: some check of the profile failed (the nodes that died
     named after them);
-21. ``passed``: every check that could be run passed (a check whose robot, head
+22. ``passed``: every check that could be run passed (a check whose robot, head
     or ball could not be told is not run: :mod:`~exp_assignment2.grading.judge.roles`; the reason
     names it, and the nodes that died).
 
@@ -194,6 +196,9 @@ RULES = (
     Rule('grader_error', 'no ground truth',
          lambda s: s.ran and (not s.states or s.ended_by == 'no_simulator'),
          lambda s: 'the simulator never reported its ground truth'),
+    Rule('grader_error', 'starved beside other runs', lambda s: s.ran and s.ended_by == 'starved',
+         lambda s: 'this machine could not keep it at real time beside other runs: ended %s '
+                   'to be run again alone, and it was not (the grading was stopped)' % _at(s)),
     Rule('timed_out', 'build limit', lambda s: not s.built and s.ended_by == 'build_limit',
          lambda s: 'the build ran past its limit'),
     Rule('timed_out', 'wall-clock limit', lambda s: s.ran and s.ended_by == 'wall_limit',
@@ -236,7 +241,7 @@ def judge(work, record_dir, result, profile):
             out['keyboard'] = seen.keyboard
     if verdict in ('passed', 'failed_checks'):
         out['checks'] = seen.checks
-        if verdict == 'failed_checks' and seen.release_evidence is not None:
+        if seen.release_evidence is not None:
             out['release_evidence'] = seen.release_evidence
     elif verdict in ('crashed', 'timed_out') and seen.checks is not None:
         # judged from the ground truth recorded until the end: the points earned so far

@@ -16,7 +16,10 @@ grading counts the costs of the runs it keeps from the start.
 
 A run that was starved all the same (the machine was busier than measured: a
 submission that costs more than the others, another program) is run again
-once the others are done, alone, and its page says why
+once the others are done, alone, and its page says why; a first attempt seen to
+fall behind is ended as soon as it is (run.ending's ``starved``: a window of 30
+wall s under 0.85 of its factor), not at its end, so that little of the
+machine's time goes to a run that will not count
 (:data:`STARVED_NOTE`). On a Dask scheduler's workers (``cores`` None) each
 worker's ``runs`` resource is the limit, and the starved runs are run again
 after the others there too.
@@ -30,8 +33,11 @@ STARVED_NOTE = 'run again: its first run was starved (%.2f of real time)'
 
 def starved(result):
     """The factor a finished run achieved when it fell below STARVED of the
-    one asked (a run that reached its simulation), else None."""
+    one asked (a run that reached its simulation), or the one it kept when it was
+    ended for falling behind (run.ending's ``starved``), else None."""
     result = result or {}
+    if result.get('ended_by') == 'starved':
+        return result.get('starved_factor') or result.get('real_time_factor') or 0.0
     achieved, asked = result.get('real_time_factor'), result.get('real_time_factor_asked')
     if not achieved or not asked or not (result.get('truth') or {}).get('sim_time'):
         return None

@@ -15,11 +15,16 @@ the run, the first of these that holds (their order is the precedence):
 5. ``duration``: the simulator reached the run's simulated duration;
 6. ``required_node_died``: roslaunch said ``REQUIRED process [NODE] has
    died!`` and shuts that launch down, as it does on the student's desktop;
-7. ``wall_limit``: the run went past its wall-clock limit;
-8. ``all_exited``: every command started has exited and the ground truth
+7. ``starved``: a first attempt that runs beside others fell behind: over the
+   last :data:`PACE_WINDOW` wall s, after :data:`PACE_AFTER` simulated s, the
+   simulator kept less than :data:`STARVING` of the factor asked (the machine
+   cannot keep both at real time: ended now and run again alone, not at its
+   end, run.admission);
+8. ``wall_limit``: the run went past its wall-clock limit;
+9. ``all_exited``: every command started has exited and the ground truth
    has been quiet for :data:`TRUTH_QUIET` s (the student's system is gone);
-9. ``no_simulator``: no ground truth came in :attr:`RunFacts.simulator_wait`;
-10. ``disk_limit``: the run's directory went past its limit.
+10. ``no_simulator``: no ground truth came in :attr:`RunFacts.simulator_wait`;
+11. ``disk_limit``: the run's directory went past its limit.
 
 The first three end the run at once (:data:`AT_ONCE`: the driver is gone,
 nothing was started, or nobody waits for the run: its sandbox is killed and
@@ -39,9 +44,12 @@ BUILD_LIMIT = 900.0     # wall s for a build
 TRUTH_QUIET = 10.0      # wall s of no ground truth after every command exited
 SIMULATOR_WAIT = 90.0   # wall s after the build for the first ground truth, plus the starts'
 STOP_GRACE = 40.0       # wall s the driver has to end its commands once asked
+PACE_WINDOW = 30.0      # wall s over which a run's pace is judged ...
+PACE_AFTER = 30.0       # ... once the simulator has run this many simulated s
+STARVING = 0.85         # of the factor asked: below it over the window, a run is starving
 AT_ONCE = ('driver_exit', 'build_failed', 'cancelled')     # nothing to ask to stop, or now
 NOT_RUN = 'not_run'     # the record's ended_by of a run that never started
-REASONS = AT_ONCE + ('build_limit', 'duration', 'required_node_died',
+REASONS = AT_ONCE + ('build_limit', 'duration', 'required_node_died', 'starved',
                      'wall_limit', 'all_exited', 'no_simulator', 'disk_limit')
 
 
@@ -49,8 +57,11 @@ class RunFacts(object):
     """What the monitor knows of a run at one look (see the module)."""
 
     def __init__(self, duration, wall_limit, started_at, starts_span=0.0,
-                 build_limit=BUILD_LIMIT):
+                 build_limit=BUILD_LIMIT, pace=None):
         self.duration, self.wall_limit = float(duration), float(wall_limit)
+        # the factor asked of a first attempt that may end starving (None: it runs on)
+        self.pace = pace
+        self.paces = []               # (wall time, simulated s) of each new ground truth
         self.started_at, self.build_limit = started_at, build_limit
         # the commands start over starts_span s (starts.span: a script's sleeps and
         # terminals, a README's delay) before the simulator can be expected
@@ -80,6 +91,8 @@ def end_reason(facts, now):
         return 'duration'
     if f.required_died:
         return 'required_node_died'
+    if starving(f) is not None:
+        return 'starved'
     if now - f.built_at > f.wall_limit:
         return 'wall_limit'
     if f.all_exited and (f.truth is None or now - f.truth[1] > TRUTH_QUIET):
@@ -89,6 +102,27 @@ def end_reason(facts, now):
     if f.over_disk:
         return 'disk_limit'
     return None
+
+
+def note_pace(facts, now):
+    """Keep the ground truth's latest simulated s against the wall (its pace)."""
+    if facts.truth is not None and (not facts.paces or facts.paces[-1][1] != facts.truth[0]):
+        facts.paces.append((now, facts.truth[0]))
+
+
+def starving(facts):
+    """The factor the simulator kept over the last :data:`PACE_WINDOW` wall s when a
+    run that may end so is starving (see the module), else None."""
+    if not facts.pace or len(facts.paces) < 2 or facts.paces[-1][1] - facts.paces[0][1] < \
+            PACE_AFTER:
+        return None
+    end_wall, end_sim = facts.paces[-1]
+    start = next(((w, t) for w, t in reversed(facts.paces) if end_wall - w >= PACE_WINDOW),
+                 None)
+    if start is None or start[1] - facts.paces[0][1] < PACE_AFTER / 2.0:
+        return None
+    kept = (end_sim - start[1]) / (end_wall - start[0])
+    return kept if kept < STARVING * facts.pace else None
 
 
 def stop_overdue(asked_at, now):

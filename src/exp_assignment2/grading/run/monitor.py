@@ -22,12 +22,14 @@ DISK_LOOK = 5.0              # wall s between two looks at the work directory's 
 
 
 def _facts(run, rtf, t0):
-    """The run's :class:`~exp_assignment2.grading.run.ending.RunFacts` at its start."""
+    """The run's :class:`~exp_assignment2.grading.run.ending.RunFacts` at its start (a
+    first attempt beside other runs may end starving: ``settings.may_end_starved``)."""
     duration = run.settings.duration
     span = starts.span(run.spec.starts) if run.spec.starts else \
         len(run.spec.commands) * run.settings.profile['delay']
+    pace = rtf if run.settings.may_end_starved and rtf > 0 else None
     return ending.RunFacts(duration, duration / (rtf if rtf > 0 else 1.0) * 1.5 + START_SLACK,
-                           t0, span)
+                           t0, span, pace=pace)
 
 
 def watch(run, box, truth, plan, rtf, result):
@@ -60,6 +62,7 @@ def watch(run, box, truth, plan, rtf, result):
             continue
         facts.cancelled = run.stop_event.is_set()
         facts.truth = truth.latest
+        ending.note_pace(facts, now)
         facts.all_exited = all_exited(events)
         if facts.built_at is not None and not facts.required_died:
             facts.required_died = required.death()
@@ -103,6 +106,8 @@ def _ask_to_stop(proc, box, truth, work, reason, facts, result):
     result['ended_at'] = truth.latest[0] if truth.latest else 0.0   # simulated s
     if reason == 'required_node_died':
         result['required_node'] = facts.required_died
+    if reason == 'starved':
+        result['starved_factor'] = round(ending.starving(facts), 3)
     result['cpu_s'], result['memory_mb'] = cpu.snapshot(box.groups.pids())
     result['log_sizes'] = log_sizes(work)
     try:

@@ -40,8 +40,12 @@ class RunSettings(object):
     """What every run of a grading shares."""
 
     def __init__(self, profile, runs_dir, hidden=(), workspace=None,
-                 real_time_factor=1.0, duration=None, version='', log=print):
+                 real_time_factor=1.0, duration=None, version='', log=print,
+                 may_end_starved=False):
         self.profile, self.runs_dir = profile, os.path.abspath(runs_dir)
+        # a first attempt that falls behind beside other runs ends early, to be run
+        # again alone (run.ending's 'starved'), rather than at its end
+        self.may_end_starved = may_end_starved
         self.hidden = [os.path.abspath(h) for h in hidden]
         self.workspace = workspace or os.environ.get('EXP2_WS') or os.path.expanduser(
             '~/.cache/exp_assignment2_ws')

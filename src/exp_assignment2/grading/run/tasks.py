@@ -173,7 +173,8 @@ def run_task(payload, stop=None, scratch_root=None):
         settings = RunSettings(spec.profile, os.path.join(scratch, 'runs'),
                                hidden=spec.hidden + [scratch],
                                real_time_factor=spec.real_time_factor,
-                               duration=spec.duration, version=mine)
+                               duration=spec.duration, version=mine,
+                               may_end_starved=(payload.get('attempt') or 1) == 1)
         run = Run(settings, spec, submission=submission)
         watcher = None
         if stop is not None:
