@@ -22,18 +22,22 @@ def test_a_kinetic_dog_that_says_so_runs_in_kinetic(graded):
     assert run['release_why'] == 'its README.md says "Kinetic"'
 
 
-def test_a_silent_kinetic_dog_fails_in_noetic_and_counts_in_kinetic(graded):
+def test_a_silent_kinetic_dog_turns_away_in_noetic_and_counts_in_kinetic(graded):
+    """In Noetic the Kinetic-steered dog turns away from the ball it sees; within the
+    short run it still comes near the ball, but never to rest at it, so its head and
+    most behaviours are not judged: the run shows the release was wrong, and Kinetic's
+    run, judged on more, counts."""
     runs = {r['release']: r for r in _runs_of(graded, 'kinetic_silent')}
-    assert runs['noetic']['verdict'] == 'failed_checks', runs['noetic']['reason']
+    evidence = runs['noetic']['release_evidence']
+    assert evidence['release'] and 'turned away from the ball it saw' in evidence['why']
     assert runs['kinetic']['verdict'] == 'passed', runs['kinetic']['reason']
     assert runs['kinetic']['label'] == 'kinetic_silent-kinetic'
-    assert runs['kinetic']['release_why'].startswith(
-        "its checks failed in ROS noetic (the course's first: the submission names none): "
-        "run again in kinetic")
+    assert "in ROS noetic (the course's first: the submission names none): run again in " \
+        "kinetic" in runs['kinetic']['release_why']
     summary = graded['by_name']['kinetic_silent']
     assert summary['verdict'] == 'passed' and summary['main_run'] == 'kinetic_silent-kinetic'
-    assert [(t['release'], t['verdict'], t['counted']) for t in summary['releases']] == [
-        ('noetic', 'failed_checks', False), ('kinetic', 'passed', True)]
+    assert [(t['release'], t['counted']) for t in summary['releases']] == [
+        ('noetic', False), ('kinetic', True)]
     with open(os.path.join(graded['out'], 'pages', 'kinetic_silent.html')) as f:
         page = f.read()
     assert 'ROS release: <b>kinetic</b>' in page and 'counts (the better)' in page

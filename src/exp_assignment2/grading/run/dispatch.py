@@ -22,19 +22,25 @@ STOP_WAIT = 30.0        # s the runs stopped now have to end (their sandboxes ki
 
 def in_next_release(run):
     """The run again in the next ROS release whose plugins behave otherwise
-    for it, when its checks failed in a release it was not told and the run
-    shows the release was the cause (judge.steering: it turned away from the
-    ball it saw, or went nowhere with its drive commanded, or failed to look a
-    frame up); None: no other to try, or nothing points at the release (a
-    failure of its own fails the same in any). The decision is kept in the
+    for it, when it ran in a release it was not told and the run shows the
+    release was wrong for it (judge.steering: it turned away from the ball it
+    saw, or went nowhere with its drive commanded, or failed to look a frame
+    up): its checks failed, or passed with those the wrong release gave no
+    occasion not judged; None: no other to try, or nothing points at the
+    release (a failure of its own fails the same in any). The decision is kept in the
     run's teacher part (``release_next``). ros_release.py; the better run counts
     (report.py)."""
     spec, result = run.spec, run.result or {}
-    if not spec.releases_next or result.get('verdict') != 'failed_checks':
+    verdict = result.get('verdict')
+    if not spec.releases_next or verdict not in ('failed_checks', 'passed'):
         return None
     release = spec.releases_next[0]
     evidence = result.get('release_evidence') or {}
-    tried = bool(evidence.get('release', True))
+    # a failed run of an older record (no evidence) is tried, as before; a passed one
+    # only where its run shows the release was wrong (checks not judged for it)
+    tried = bool(evidence.get('release', verdict == 'failed_checks'))
+    if verdict == 'passed' and not tried:
+        return None
     _keep_decision(run, {'release': release, 'tried': tried,
                          'why': evidence.get('why') or 'no evidence of the run was read'})
     if not tried:
@@ -42,9 +48,11 @@ def in_next_release(run):
     data = spec.to_dict()
     data.update(release=release, releases_next=data['releases_next'][1:],
                 label='%s-%s' % (spec.label, release),
-                release_why='its checks failed in ROS %s (%s): run again in %s, whose Gazebo '
-                            'plugins behave otherwise for it (%s)' % (
-                                spec.release, spec.release_why, release,
+                release_why='%s in ROS %s (%s): run again in %s, whose Gazebo plugins '
+                            'behave otherwise for it (%s)' % (
+                                'its checks failed' if verdict == 'failed_checks' else
+                                'it passed, some checks not judged,', spec.release,
+                                spec.release_why, release,
                                 evidence.get('why') or 'the run was not read'))
     return Run(run.settings, RunSpec.from_dict(data))
 
