@@ -27,9 +27,10 @@ def test_the_reference_stops_looks_and_trails():
 
 def test_each_threshold_is_the_references_figure_with_its_margin(monkeypatch, tmp_path):
     found = [{'stop_distances': [2.71, 2.84], 'sweeps': [0.8, 0.78], 'sweep_times': [12.0, 9.5],
-              'trailing': [3.0] * 30 + [5.0] * 10, 'per_place': [10.8]},
+              'trailing': [3.0] * 30 + [5.0] * 10, 'per_place': [10.8],
+              'asleep_after': [34.0, 15.8]},
              {'stop_distances': [2.9], 'sweeps': [0.8], 'sweep_times': [30.0],
-              'trailing': [4.0] * 4, 'per_place': [15.3]}]
+              'trailing': [4.0] * 4, 'per_place': [15.3], 'asleep_after': [16.2]}]
     figures = [{'follows_ball': (0.8, 50.0), 'looks_both_ways': (1.0, 60.0),
                 'gives_up_ball': (14.0, 90.0), 'sleeps': (15.2, 40.0), 'wanders': (9, 20.0),
                 'first_approach_time': (40.0, 40.0)},
@@ -46,6 +47,7 @@ def test_each_threshold_is_the_references_figure_with_its_margin(monkeypatch, tm
     assert checks['looks_both_ways']['angle'] == 0.35           # half of 0.78, down to 0.05
     assert checks['looks_both_ways']['window'] == 40            # 30 s + 25 %, up to 5 s
     assert checks['wanders']['per'] == 35                       # twice 15.3 s, up to 5 s
+    assert checks['sleeps']['unseen'] == 15                     # 15.8 s, down to 5 s
     assert checks['follows_ball']['follow'] == 4.5              # 3/4 of them within 4.0; + 10 %
     assert checks['follows_ball']['min'] == 0.55                # 0.7 - 20 %
     assert checks['looks_both_ways']['min'] == 0.6              # 0.75 - 20 %
@@ -55,7 +57,7 @@ def test_each_threshold_is_the_references_figure_with_its_margin(monkeypatch, tm
     assert got['duration'] == 170 and checks['sleeps']['occasion'] == 170   # 152 + 10 %
     assert (checks['first_approach_time']['max'], checks['first_approach_time']['zero']) == (
         70, 170)
-    assert len(lines) == 12 and lines[0].startswith('reach 3.2 m: the reference came to rest')
+    assert len(lines) == 13 and lines[0].startswith('reach 3.2 m: the reference came to rest')
     calibration.write(str(tmp_path / 'dog.yaml'), got, lines, '/ref')
     text = (tmp_path / 'dog.yaml').read_text()
     assert text.startswith('# Calibrated by: bash tools/run grade --calibrate /ref\n')

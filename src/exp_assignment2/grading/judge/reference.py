@@ -33,13 +33,14 @@ def distances(trace, roles, check):
     which it looked around], 'sweeps': [rad the head turned each way then, the lesser],
     'sweep_times': [s from the arrival to the head's second side],
     'trailing': [m to the moving ball while it was in view, the robot awake],
-    'per_place': [s the ball was out of its sight for each place it wandered to]}."""
+    'per_place': [s the ball was out of its sight for each place it wandered to],
+    'asleep_after': [s it had been without the ball when each sleep began]}."""
     track = bt.samples(trace, roles.robot.name, roles.ball.name, roles.head.name,
                        check.get('arena'))
     speeds, sight = bt.ball_speeds(track), bt.Sight(trace, roles, check)
     asleep = behaviours._asleep(track, check)
     out = {'stop_distances': [], 'sweeps': [], 'sweep_times': [], 'trailing': [],
-           'per_place': []}
+           'per_place': [], 'asleep_after': []}
     # each arrival's look is the head while the reference stayed there (it looks while
     # it rests): what it turned and how long it took, where it came to rest
     for i0, why, i1 in arrivals.arrivals(track, float('inf'), sight, asleep):
@@ -58,6 +59,10 @@ def distances(trace, roles, check):
             out['trailing'].append(round(bt.distance(s), 3))
     places, unseen, _ = behaviours.wandered(trace, roles, check)
     out['per_place'] = [round(unseen / len(places), 1)] if places else []
+    # how long it had been without the ball when each sleep began
+    for a, _, _, _ in behaviours.rests(track, check, float(check.get('rest', behaviours.REST))):
+        seen_at = next((s.t for s in reversed(track[:a]) if sight.sees(s)), track[0].t)
+        out['asleep_after'].append(round(track[a].t - seen_at, 1))
     return out
 
 
