@@ -47,7 +47,7 @@ def test_each_threshold_is_the_references_figure_with_its_margin(monkeypatch, tm
     assert checks['looks_both_ways']['angle'] == 0.35           # half of 0.78, down to 0.05
     assert checks['looks_both_ways']['window'] == 40            # 30 s + 25 %, up to 5 s
     assert checks['wanders']['per'] == 35                       # twice 15.3 s, up to 5 s
-    assert checks['sleeps']['unseen'] == 15                     # 15.8 s, down to 5 s
+    assert checks['sleeps']['unseen'] == 30                     # twice 15.8 s, down to 5 s
     assert checks['follows_ball']['follow'] == 4.5              # 3/4 of them within 4.0; + 10 %
     assert checks['follows_ball']['min'] == 0.55                # 0.7 - 20 %
     assert checks['looks_both_ways']['min'] == 0.6              # 0.75 - 20 %

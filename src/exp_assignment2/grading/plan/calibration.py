@@ -80,11 +80,11 @@ def derive(profile, traces, say):
             'place each %s s; twice its slowest' % (per, ', '.join('%.1f' % p for p in per_place)))
     asleep_after = [a for f in found for a in f.get('asleep_after', [])]
     if asleep_after:
-        unseen = max(5.0, _down(min(asleep_after), 5.0))
+        unseen = max(5.0, _down(min(asleep_after) / HALF, 5.0))
         _set(out, 'sleeps', unseen=unseen)
         say('a sleep judged where the ball was out of sight %g s at a stretch: the reference '
-            'fell asleep %s s after it last saw the ball; the least, down to 5 s' % (
-                unseen, ', '.join('%.1f' % a for a in asleep_after)))
+            'fell asleep %s s after it last saw the ball; twice the least (a dog may wander '
+            'a while first), down to 5 s' % (unseen, ', '.join('%.1f' % a for a in asleep_after)))
     trailing = [d for f in found for d in f['trailing']]
     if trailing:
         follow = reference.round_up(reference.percentile(trailing, 0.75) * (1 + MARGIN), 0.5)
