@@ -54,6 +54,7 @@ KINDS = ('simulator', 'display', 'viewer', 'student', 'ROS', 'grader')
 OWN = ('simulator', 'viewer', 'display', 'ROS')       # the grader's own share of a run
 OWN_GOAL = 0.30                         # cores at real time, a dog run (issue 51)
 GOAL = (10, 200.0, 12 * 60.0, 0.95)     # runs, simulated s each, wall s, least factor
+WALL_GOAL = 1.25                        # wall time / (the runs' CPU / cores), a class
 # a class of real shape: several kinds of submission, from the grader's fixtures
 # (the dog that works, one that imshows every frame, a Python 2 one, a Kinetic
 # one, one whose required node dies, a C++ one that does not build) beside
@@ -109,6 +110,26 @@ def cpu_per_run(runs):
             out[kind].append(cpu.get(kind, 0.0) / sim)
         out['all'].append(sum(cpu.values()) / sim)
     return out
+
+
+def class_cost(runs, count, wall, cores=None):
+    """The line that says what a grading's wall time was against the CPU its runs
+    needed (issue 61): the counted runs' CPU s over the machine's cores, the
+    bound no packing beats; their ratio (the goal: at most WALL_GOAL); runs made
+    per submission (the starved ones again alone counted twice); the least
+    real-time factor of a counted run."""
+    cores = cores or os.cpu_count()
+    needed = sum(sum((r.get('cpu_s') or {}).values()) for r in runs)
+    again = sum(any(n.startswith('run again: its first run was starved')
+                    for n in (r.get('teacher') or {}).get('notes') or []) for r in runs)
+    factors = [r['real_time_factor'] for r in runs if r.get('real_time_factor')]
+    bound = needed / cores
+    return ('wall %.0f s; the CPU its runs needed %.0f s over %d cores: %.0f s; wall / that '
+            '%s (the goal: at most %.2f); %d runs for %d submissions (%.2f each, %d of them '
+            'again alone, starved); the least real-time factor of a counted run %s' % (
+                wall, needed, cores, bound, '%.2f' % (wall / bound) if bound else '-',
+                WALL_GOAL, len(runs) + again, count, (len(runs) + again) / max(1, count),
+                again, '%.2f' % min(factors) if factors else '-'))
 
 
 def print_cpu(runs, jobs, profile):
@@ -238,6 +259,7 @@ def grade_rows(args, folder, scratch, count, jobs_list, name='jobs', goal=True):
         print('     each run\'s real-time factor: ' + ', '.join(
             '%s %.2f%s' % (r['label'], r['real_time_factor'], ' (run again)' if r in again
                            else '') for r in runs if r.get('real_time_factor')))
+        print('     ' + class_cost(runs, count, wall))
         if goal:
             print('     ' + goal_line(args, count, wall, factors))
         if detail is None:

@@ -13,8 +13,9 @@ every check the person judged (``passed``, ``failed``, ``not judged``; a list of
 them where chance decides between them, ``any`` where it decides all) came out
 as they said. It prints the agreement ("8 of 10
 verdicts as by hand") and each disagreement with its check, the grader's figure
-and detail, and the person's reason. ``--report-only`` compares the gradings
-already in ``--out`` without running anything.
+and detail, and the person's reason. ``--report-only`` judges the gradings
+already in ``--out`` again from their records (``grade --report-only``: the
+judge as it is now, no run done again) and compares them.
 
 It is a benchmark, not a test: it needs the class's repositories (CI has no
 network) and takes the time a grading takes.
@@ -24,8 +25,11 @@ import json
 import os
 import subprocess
 import sys
+import time
 
 import yaml
+
+import grade as bench_grade     # bench/grade.py: what a grading cost against what it needed
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
@@ -126,20 +130,43 @@ def main(argv=None):
     parser.add_argument('--report-only', action='store_true')
     args, options = parser.parse_known_args(argv)
     hand = load_hand(args.hand)
-    outs = []
+    outs, walls = [], {}
     for profile in sorted({h['profile'] for h in hand.values()}):
         folder = os.path.join(args.classes, profile)
         out = os.path.join(os.path.abspath(args.out), profile)
         outs.append(out)
-        if args.report_only:
+        if args.report_only:        # judged again from the runs' records, none run again
+            if os.path.isdir(out):
+                grade(folder, out, profile, options + ['--report-only'])
             continue
         if not os.path.isdir(folder):
             print('%s: no folder of the %s class (docs/real_class.md says how to fetch it)'
                   % (folder, profile))
             continue
+        started = time.monotonic()
         grade(folder, out, profile, options)
+        walls[out] = time.monotonic() - started
     same = report(hand, outs)
+    for out in outs:
+        print_cost(out, walls.get(out))
     return 0 if same == len(hand) else 1
+
+
+def print_cost(out, wall):
+    """What the grading in ``out`` cost against the CPU its runs needed; ``wall`` None
+    (a grading made earlier): from its runs' records, the first start to the last end."""
+    path = os.path.join(out, 'report.json')
+    if not os.path.isfile(path):
+        return
+    with open(path) as f:
+        graded = json.load(f)
+    runs = graded['runs']
+    if wall is None:
+        spans = [(r['started'], r['finished']) for r in runs if r.get('started') and
+                 r.get('finished')]
+        wall = max(b for _, b in spans) - min(a for a, _ in spans) if spans else 0.0
+    print('%s: %s' % (os.path.basename(out), bench_grade.class_cost(
+        runs, len(graded['submissions']), wall)))
 
 
 if __name__ == '__main__':

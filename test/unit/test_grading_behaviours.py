@@ -152,6 +152,31 @@ def test_a_sleep_at_home():
                   home=[-6, -6])[0] == 0.0
 
 
+def test_the_turns_that_end_a_drive_and_begin_the_next_are_not_rest():
+    """A wanderer that turns on the spot at its goal (0.5 rad/s, 0.9 rad), pauses 6 s,
+    turns back 0.7 rad towards its next goal and drives on: the turns' ends lie within
+    the heading a rest may drift of each other, but a dog turning is not asleep: it
+    rested 6 s, not 8 or more. A dog that settles after a jolt (one sample 0.1 rad off)
+    still rests."""
+    def robot(t):
+        if t < 10:
+            return (t / 2.0, 0.0, 0.0)
+        if t < 11.8:
+            return (5.0, 0.0, 0.5 * (t - 10))                      # turns at its goal
+        if t < 17.8:
+            return (5.0, 0.0, 0.9)                                 # still
+        if t < 19.2:
+            return (5.0, 0.0, 0.9 - 0.5 * (t - 17.8))              # turns to the next
+        return (5.0 + (t - 19.2) / 2.0, 0.0, 0.2)
+    run = trace(robot, lambda t: (9, 9, HIDDEN), until=30)
+    got = figure(run, 'sleeps', occasion=30, unseen=0)[0]
+    assert 5.5 <= got <= 6.5
+    jolted = lambda t: (5.0, 0.0, 0.1 if abs(t - 14.0) < 0.05 else 0.0) if t >= 10 \
+        else (t / 2.0, 0.0, 0.0)  # noqa: E731
+    assert figure(trace(jolted, lambda t: (9, 9, HIDDEN), until=30), 'sleeps',
+                  occasion=30, unseen=0)[0] == pytest.approx(20.0, abs=0.5)
+
+
 def test_a_dog_that_always_saw_the_ball_had_no_occasion_to_sleep():
     """A dog plays while it sees the ball: one that had the ball in view all the run (a
     ball nobody moved, in front of it) never had a stretch of NORMAL to sleep in; one

@@ -21,6 +21,7 @@ ARRIVE = 1.0        # m beyond its radius the robot was before a rest: it came t
 REST = 10.0         # s: a rest this long away from the ball is a sleep (follows, looks)
 STILL = 0.3         # m: a robot resting at a place of its own stays this close to it
 STILL_YAW = 0.35    # rad: and turns no more than this
+STILL_TURN = 0.25   # rad: nor turns more than this within any second (a turn is no rest)
 SLACK = 1.0         # s: a run of its full duration may end a state short of it
 
 
@@ -43,14 +44,16 @@ def rests(track, check, least):
     away) to its home, the profile's ``home``, and stayed within ``radius`` m of
     it ``least`` s; without a home, to any place away from the ball (a home of
     its own), where it stayed still (within :data:`STILL` m, its heading within
-    :data:`STILL_YAW` rad: a dog turning on the spot to search is not asleep)."""
+    :data:`STILL_YAW` rad and turning no more than :data:`STILL_TURN` rad within a
+    second: a dog turning on the spot to search, or to set off, is not asleep)."""
     home = check.get('home')
     radius = float(check.get('radius', check.get('home_radius', 1.0)))
     radius = radius if home else min(radius, STILL)
     far = OUT * _reach(check)
     pts = bt.smoothed([(s.t, s.rx, s.ry) for s in track])
     gap = lambda i, x, y: math.hypot(pts[i][1] - x, pts[i][2] - y)  # noqa: E731
-    turned = lambda i, j: home is None and _turn(track[i].ryaw, track[j].ryaw) > STILL_YAW  # noqa
+    turned = lambda i, j: home is None and (  # noqa: E731
+        _turn(track[i].ryaw, track[j].ryaw) > STILL_YAW or _turning(track, j) > STILL_TURN)
     found, i = [], 0
     while i < len(pts):
         x, y = home if home else pts[i][1:]
@@ -65,6 +68,16 @@ def rests(track, check, least):
         else:
             i += 1
     return found
+
+
+def _turning(track, j, second=1.0):
+    """rad: the widest turn between the robot's headings in the second up to sample j
+    (0 where unknown): a turn on the spot, not the jolt of one sample."""
+    k = j
+    while k > 0 and track[k - 1].t > track[j].t - second:
+        k -= 1
+    return max([_turn(track[a].ryaw, track[b].ryaw) for a in range(k, j + 1)
+                for b in range(a + 1, j + 1)] or [0.0])
 
 
 def _turn(a, b):
