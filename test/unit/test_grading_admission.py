@@ -12,7 +12,7 @@ import pytest
 distributed = pytest.importorskip('distributed')
 from exp_assignment2.grading import record  # noqa: E402
 from exp_assignment2.grading.run import dispatch  # noqa: E402
-from exp_assignment2.grading.run.admission import Admission, cost, starved  # noqa: E402
+from exp_assignment2.grading.run.admission import BUSY, Admission, cost, starved  # noqa: E402
 from test_grading_stopping import Cluster, came_back, runs_of  # noqa: E402,F401
 from test_grading_stopping import no_wait  # noqa: E402,F401 -- the fixture
 
@@ -56,6 +56,22 @@ def test_a_submission_s_runs_count_at_what_its_own_code_costs():
     assert not admission.may_start(1.0, 'middle')              # 1.7 + 1.0 > 2
     admission.counted(ran(0.9), 'busy_loops')                  # its dearest run counts
     assert admission.per_run('busy_loops') == pytest.approx(1.7)
+
+
+def test_a_submission_whose_python_loops_without_waiting_counts_dearer_until_measured():
+    """A loop that goes round without waiting keeps a core busy: such a submission,
+    not yet measured, is not started beside another run it would starve."""
+    admission = Admission(2, 0.7, 8)
+    admission.expect_busy('spins')
+    assert admission.per_run('spins') == pytest.approx(0.7 + BUSY)
+    assert admission.per_run('quiet') == pytest.approx(0.7)
+    admission.started('quiet', 1.0, 'quiet')
+    assert not admission.may_start(1.0, 'spins')            # 0.7 + 1.5 > 2
+    assert admission.may_start(1.0, 'other')
+    admission.counted(ran(0.9), 'spins')                      # its own run says
+    assert admission.per_run('spins') == pytest.approx(0.9)
+    admission.counted(ran(0.4), 'quiet')
+    assert admission.per_run('later') == pytest.approx(0.4)   # the class's median: no BUSY
 
 
 def test_the_first_run_always_starts_and_as_fast_as_possible_takes_every_core():

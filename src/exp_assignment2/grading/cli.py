@@ -14,13 +14,14 @@ import multiprocessing
 import os
 import sys
 
+from exp_assignment2.grading.plan import busy_loops
 from exp_assignment2.grading.plan import planning
 from exp_assignment2.grading.plan import profiles
 from exp_assignment2.grading.report import gradebook
 from exp_assignment2.grading.report import index as report
 from exp_assignment2.grading.report import resumed as report_resumed
 from exp_assignment2.grading.run import tasks
-from exp_assignment2.grading.run.admission import Admission
+from exp_assignment2.grading.run.admission import BUSY, Admission
 from exp_assignment2.grading.run.cluster import Cluster, ClusterError
 from exp_assignment2.grading.run.dispatch import grade
 from exp_assignment2.grading.run.resume import Resume
@@ -109,12 +110,19 @@ def most_jobs(args):
     return args.jobs or RUNS_PER_CORE * multiprocessing.cpu_count()
 
 
-def admission(args, profile, runs):
+def admission(args, profile, runs, copies, log):
     """When each run may start (run.admission): on this machine, when the cores
-    its measured cost needs are free; on a Dask scheduler's workers, as they take them."""
+    its measured cost needs are free (a submission whose Python loops without
+    waiting, plan.busy_loops, counted dearer until measured); on a Dask
+    scheduler's workers, as they take them."""
     if args.scheduler:
         return Admission(None, profile['cpu_per_run'], len(runs))
-    return Admission(multiprocessing.cpu_count(), profile['cpu_per_run'], most_jobs(args))
+    admitting = Admission(multiprocessing.cpu_count(), profile['cpu_per_run'], most_jobs(args))
+    for name, where in sorted(busy_loops.of_runs(runs, copies).items()):
+        admitting.expect_busy(name)
+        log('%s: counted %g cores dearer until its run is measured: its Python loops without '
+            'waiting (%s)' % (name, BUSY, ', '.join('%s:%d' % place for place in where[:3])))
+    return admitting
 
 
 def plan_runs(args, out, log, read, submissions, copies):
@@ -188,7 +196,7 @@ def _grade(args, out, log, read, submissions, copies):
         log('nothing to grade')
         return EXIT_USAGE
     os.makedirs(os.path.join(out, 'runs'), exist_ok=True)
-    jobs, admitting = most_jobs(args), admission(args, profile, runs)
+    jobs, admitting = most_jobs(args), admission(args, profile, runs, copies, log)
     try:
         cluster = Cluster(args.scheduler, jobs=jobs, log=log)
     except ClusterError as exc:

@@ -8,7 +8,9 @@ submission's code costs: the submission's runs measured so far (its releases,
 repeats and episodes run the same code), else the class's median of the runs
 that finished, else the profile's ``cpu_per_run`` (their CPU s per simulated
 s, from their control group: the record's ``cpu_s`` and ``sim_time``), at the
-real-time factor it is run at. The queue is taken in order, each run that
+real-time factor it is run at; a submission not yet measured whose Python has a
+loop that can go round without waiting (plan.busy_loops) is counted
+:data:`BUSY` cores dearer, as such a loop keeps a core busy. The queue is taken in order, each run that
 fits the free cores started (first fit: a cheap run starts beside a dear one
 where the next in line would not fit); ``--jobs`` is only the most at once.
 The first run always starts, whatever it is expected to cost. A resumed
@@ -28,6 +30,8 @@ after the others there too.
 STARVED = 0.95            # of the factor asked: below it, a run was starved
 MIN_SIM = 10.0            # simulated s a run must have lasted for its cost to count
 QUANTILE = 0.5            # an unmeasured submission's run counted at the class's median
+BUSY = 0.8                # cores more for one whose Python loops without waiting (a real
+                          # class: 0.9 to 1.2 cores of student code, the others 0.1 to 0.5)
 STARVED_NOTE = 'run again: its first run was starved (%.2f of real time)'
 
 
@@ -67,17 +71,25 @@ class Admission(object):
         self.costs = []             # measured, CPU s per simulated s
         self.mine = {}              # submission -> its runs' measured costs
         self.running = {}           # label -> cores counted for it
+        self.busy = set()           # submissions whose Python loops without waiting
+
+    def expect_busy(self, name):
+        """Submission ``name`` has a loop that can go round without waiting: until
+        its own run is measured, it is counted BUSY cores dearer."""
+        self.busy.add(name)
 
     def per_run(self, name=None):
         """CPU s per simulated s counted for a run of submission ``name``: what its own
         runs measured (the most of them: its releases, repeats and episodes run the same
-        code), else the class's median, else the profile's figure."""
+        code), else the class's median, else the profile's figure (BUSY more for a
+        submission that loops without waiting)."""
         if name is not None and self.mine.get(name):
             return max(self.mine[name])
+        extra = BUSY if name in self.busy else 0.0
         if not self.costs:
-            return self.first
+            return self.first + extra
         ordered = sorted(self.costs)
-        return ordered[int(round(QUANTILE * (len(ordered) - 1)))]
+        return ordered[int(round(QUANTILE * (len(ordered) - 1)))] + extra
 
     def need(self, rtf, name=None):
         """Cores a run at real-time factor ``rtf`` is counted at (0, as fast
