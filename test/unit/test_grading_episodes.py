@@ -7,7 +7,7 @@ import os
 
 import pytest
 
-from exp_assignment2.grading import cli
+from exp_assignment2.grading import options
 from exp_assignment2.grading.judge import metrics, roles
 from exp_assignment2.grading.plan import episodes, profiles
 from exp_assignment2.grading.plan.spec import RunSpec
@@ -75,15 +75,15 @@ def test_a_run_carries_its_episode_and_the_balls_setting():
 
 
 def test_the_command_line_takes_episodes_and_calibrate():
-    args = cli.parse_args(['class', '--episodes', '3'])
+    args = options.parse_args(['class', '--episodes', '3'])
     assert args.episodes == 3 and args.calibrate is None
-    args = cli.parse_args(['--calibrate'])
+    args = options.parse_args(['--calibrate'])
     assert args.calibrate == '' and args.submissions is None
-    assert cli.parse_args(['--calibrate', 'ref']).calibrate == 'ref'
+    assert options.parse_args(['--calibrate', 'ref']).calibrate == 'ref'
     with pytest.raises(SystemExit):
-        cli.parse_args([])
+        options.parse_args([])
     with pytest.raises(SystemExit):
-        cli.parse_args(['class', '--episodes', '0'])
+        options.parse_args(['class', '--episodes', '0'])
 
 
 def ball_facts(name, scripted_by=None):

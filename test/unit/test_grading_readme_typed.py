@@ -9,7 +9,8 @@ import pytest
 
 from exp_assignment2.grading.entry import packages as packages_
 from exp_assignment2.grading.plan import assignment
-from exp_assignment2.grading.plan.commands import command_word, readme_entries
+from exp_assignment2.grading.plan.commands import readme_entries
+from exp_assignment2.grading.plan.typed import command_word
 from exp_assignment2.grading.plan.planning import resolve
 from exp_assignment2.grading.plan.shell import words
 from readme_packages import DOG, commands_ran, package, reader

@@ -16,6 +16,7 @@ sys.path.insert(0, os.path.join(HERE, '..'))
 sys.path.insert(0, os.path.join(HERE, '..', '..', 'src'))
 pytest.importorskip('copydetect')
 import similarity_fixtures  # noqa: E402
+from exp_assignment2.grading import options
 from exp_assignment2.grading import cli
 from exp_assignment2.grading import record
 from exp_assignment2.grading.plan import profiles
@@ -154,10 +155,10 @@ def test_grading_yaml_template_relative_to_the_folder(made, tmp_path):
     teacher_file = tmp_path / 'grading.yaml'
     teacher_file.write_text('template: [%s]\n' % os.path.relpath(template, folder))
     teacher = read_teacher_file(str(teacher_file))
-    args = cli.parse_args([folder])
+    args = options.parse_args([folder])
     assert similarity_run.templates_of(args, teacher, folder) == [template]
-    args = cli.parse_args([folder, '--template', folder])        # the command line's first
+    args = options.parse_args([folder, '--template', folder])        # the command line's first
     assert similarity_run.templates_of(args, teacher, folder) == [folder]
     with pytest.raises(TeacherFileError):
-        similarity_run.templates_of(cli.parse_args([folder, '--template', root + '/nope']),
+        similarity_run.templates_of(options.parse_args([folder, '--template', root + '/nope']),
                                     {}, folder)

@@ -205,7 +205,7 @@ def _launch_request(key, parts, cwd, ctx):
 
 
 def typo_note(entry):
-    """The words for a command word the README mistyped (commands.typed)."""
+    """The words for a command word the README mistyped (typed.typed)."""
     return 'the README types `%s`: read as `%s`, as the person typing it does after ' \
         '"command not found"' % (entry['typed'], shell_words(entry['command'])[0])
 
