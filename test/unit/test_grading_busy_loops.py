@@ -84,3 +84,18 @@ def test_a_submission_s_built_packages_are_read_and_nothing_else(tmp_path):
     (other / 'spin.py').write_text('while 1:\n    pass\n')
     assert busy_loops.in_folders(str(tmp_path), ['pkg']) == [
         ('pkg/scripts/node', 2), ('pkg/scripts/spin.py', 1)]
+
+
+def test_a_hostile_python_2_file_is_not_translated_for_long(tmp_path):
+    """2to3 takes 0.03 s a kilobyte or more: a large Python 2 file is left unread
+    (not known to loop), and one submission's translations stop at their time."""
+    big = ''.join('def f%d(x):\n    print "a", x\n    while x:\n        pass\n' % i
+                  for i in range(3000))
+    assert len(big) > busy_loops.MOST_TRANSLATED
+    pkg = tmp_path / 'pkg'
+    pkg.mkdir()
+    (pkg / 'big.py').write_text(big)
+    (pkg / 'small.py').write_text('print "a"\nwhile 1:\n    pass\n')
+    assert busy_loops.in_folders(str(tmp_path), ['pkg']) == [('pkg/small.py', 2)]
+    spent = busy_loops.Budget(0.0)
+    assert busy_loops._tree('print "a"\n', 'small.py', spent) is None

@@ -12,11 +12,14 @@ A ``while`` loop is busy when some path through its body comes back to its test
 ``spin``, ``waitKey``, ``wait_for_*``, a service call, ...); a loop inside it
 that waits counts as waiting. Python 2 files are read through the original
 environment's translation (the same fixers its nodes run through), tabs as
-Python 2 read them.
+Python 2 read them; 2to3 is slow (0.03 to 0.04 s a kilobyte), so only files of
+at most MOST_TRANSLATED bytes are translated, for at most TRANSLATION_TIME s a
+submission: a file not read is not known to loop.
 """
 import ast
 import os
 import sys
+import time
 
 from exp_assignment2.grading.entry.submissions import SubmissionError
 
@@ -26,7 +29,10 @@ WAITS = frozenset((
     'get_result', 'send_goal_and_wait', 'join', 'input', 'raw_input', 'recv', 'select',
     'get', 'acquire', 'readline', 'read', 'getch', 'call', 'imshow', 'lookup_transform'))
 MOST_FILES = 200            # Python files read of one submission
-MOST_BYTES = 512 * 1024     # of one file
+MOST_BYTES = 256 * 1024     # of one file
+# 2to3 takes 0.03 to 0.04 s a kilobyte: a file it translates, and its time for one submission
+MOST_TRANSLATED = 64 * 1024
+TRANSLATION_TIME = 3.0      # s (a real submission: under 1)
 
 
 def _name(call):
@@ -86,11 +92,12 @@ def in_tree(tree):
                   _path(node.body) in ('falls', 'busy'))
 
 
-def _tree(text, path):
+def _tree(text, path, budget=None):
     """The module's tree as Python 3 reads it, else as the original environment
-    runs a Python 2 file (translated, tabs of 8), else None."""
+    runs a Python 2 file (translated, tabs of 8; a file of at most MOST_TRANSLATED
+    bytes, while ``budget``, a :class:`Budget`, has time left), else None."""
     for version in (text, text.expandtabs(8)):
-        for read in (lambda: version, lambda: _translate(version, path)):
+        for read in (lambda: version, lambda: _translate(version, path, budget)):
             source = read()
             try:
                 if source is not None:
@@ -100,7 +107,19 @@ def _tree(text, path):
     return None
 
 
-def _translate(text, path):
+class Budget(object):
+    """The time left to translate one submission's Python 2 files (monotonic s)."""
+
+    def __init__(self, seconds=TRANSLATION_TIME):
+        self.until = time.monotonic() + seconds
+
+    def left(self):
+        return time.monotonic() < self.until
+
+
+def _translate(text, path, budget=None):
+    if len(text) > MOST_TRANSLATED or (budget is not None and not budget.left()):
+        return None
     here = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
         os.path.abspath(__file__)))), 'original_env', 'startup')
     if here not in sys.path:
@@ -135,7 +154,7 @@ def _python_files(folder):
 def in_folders(root, folders):
     """[(file relative to ``root``, line)] of the busy loops in the Python of
     ``folders`` (relative to ``root``: the packages a run builds)."""
-    found, read = [], 0
+    found, read, budget = [], 0, Budget()
     for folder in folders:
         for path in _python_files(os.path.join(root, folder)):
             if read >= MOST_FILES:
@@ -148,7 +167,7 @@ def in_folders(root, folders):
                     text = f.read()
             except OSError:
                 continue
-            tree = _tree(text, path)
+            tree = _tree(text, path, budget)
             if tree is not None:
                 found += [(os.path.relpath(path, root), line) for line in in_tree(tree)]
     return found
