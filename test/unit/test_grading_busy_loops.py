@@ -99,3 +99,13 @@ def test_a_hostile_python_2_file_is_not_translated_for_long(tmp_path):
     assert busy_loops.in_folders(str(tmp_path), ['pkg']) == [('pkg/small.py', 2)]
     spent = busy_loops.Budget(0.0)
     assert busy_loops._tree('print "a"\n', 'small.py', spent) is None
+
+
+def test_a_file_too_deep_to_follow_is_not_known_to_loop(tmp_path):
+    """Two thousand elifs parse, and are deeper than a path can be followed."""
+    pkg = tmp_path / 'pkg'
+    pkg.mkdir()
+    (pkg / 'deep.py').write_text('while x:\n    if a == 0:\n        pass\n' + ''.join(
+        '    elif a == %d:\n        pass\n' % i for i in range(1, 2000)))
+    (pkg / 'spin.py').write_text('while 1:\n    pass\n')
+    assert busy_loops.in_folders(str(tmp_path), ['pkg']) == [('pkg/spin.py', 1)]
