@@ -1,7 +1,9 @@
 """A submission's file read as text, as the plan reads them all (no ROS):
 the start of it (a file bigger than that is not a README, a launch file or a
 script a person reads), undecodable bytes replaced, an unreadable file as
-empty: a student's odd file never stops the planning."""
+empty: a student's odd file never stops the planning. And which of a
+package's files are Python."""
+import os
 
 READ_LIMIT = 1 << 20      # bytes of one file read
 
@@ -13,3 +15,26 @@ def read_text(path, limit=READ_LIMIT):
             return f.read(limit)
     except OSError:
         return ''
+
+
+def python_files(folder, skipped=()):
+    """The Python files under ``folder``, in order: ``.py`` files and scripts
+    whose first line runs python (a link to one too: an entry's copy keeps only
+    links inside it); no hidden folder, none named in ``skipped``."""
+    for root, dirs, files in os.walk(folder):
+        dirs[:] = sorted(d for d in dirs if not d.startswith('.') and d not in skipped)
+        for name in sorted(files):
+            path = os.path.join(root, name)
+            if not os.path.isfile(path):
+                continue
+            if name.endswith('.py') or is_python_script(path):
+                yield path
+
+
+def is_python_script(path):
+    try:
+        with open(path, 'rb') as f:
+            first = f.readline(200)
+    except OSError:
+        return False
+    return first.startswith(b'#!') and b'python' in first

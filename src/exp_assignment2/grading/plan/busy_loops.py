@@ -21,6 +21,7 @@ import os
 import sys
 import time
 
+from exp_assignment2.grading.entry.reading import python_files
 from exp_assignment2.grading.entry.submissions import SubmissionError
 
 WAITS = frozenset((
@@ -132,31 +133,12 @@ def _translate(text, path, budget=None):
     return translation.text if translation is not None else None
 
 
-def _python_files(folder):
-    for root, dirs, files in os.walk(folder):
-        dirs[:] = sorted(d for d in dirs if not d.startswith('.'))
-        for name in sorted(files):
-            path = os.path.join(root, name)
-            if os.path.islink(path) or not os.path.isfile(path):
-                continue
-            if name.endswith('.py'):
-                yield path
-                continue
-            try:
-                with open(path, 'rb') as f:
-                    head = f.read(128)
-            except OSError:
-                continue
-            if head.startswith(b'#!') and b'python' in head.split(b'\n')[0]:
-                yield path
-
-
 def in_folders(root, folders):
     """[(file relative to ``root``, line)] of the busy loops in the Python of
     ``folders`` (relative to ``root``: the packages a run builds)."""
     found, read, budget = [], 0, Budget()
     for folder in folders:
-        for path in _python_files(os.path.join(root, folder)):
+        for path in python_files(os.path.join(root, folder)):
             if read >= MOST_FILES:
                 return found
             read += 1

@@ -4,35 +4,23 @@ sizes at the end of the run."""
 import os
 import re
 
+from exp_assignment2.grading.entry.reading import python_files
+
 WALL_CLOCK = re.compile(r'\btime\.(sleep|time)\s*\(|\brospy\.Rate\b.*\bwall\b')
 
 
 def waits_on_wall_clock(package_dir):
     """[(file, line)] where the package's Python waits on or reads the wall clock."""
     found = []
-    for root, dirs, files in os.walk(package_dir):
-        dirs[:] = [d for d in dirs if not d.startswith('.') and d not in ('build', 'devel')]
-        for name in files:
-            path = os.path.join(root, name)
-            if not name.endswith('.py') and not is_python_script(path):
-                continue
-            try:
-                with open(path, errors='replace') as f:
-                    for number, line in enumerate(f, 1):
-                        if WALL_CLOCK.search(line.split('#')[0]):
-                            found.append((os.path.relpath(path, package_dir), number))
-            except OSError:
-                continue
+    for path in python_files(package_dir, skipped=('build', 'devel')):
+        try:
+            with open(path, errors='replace') as f:
+                for number, line in enumerate(f, 1):
+                    if WALL_CLOCK.search(line.split('#')[0]):
+                        found.append((os.path.relpath(path, package_dir), number))
+        except OSError:
+            continue
     return found
-
-
-def is_python_script(path):
-    try:
-        with open(path, 'rb') as f:
-            first = f.readline(200)
-    except OSError:
-        return False
-    return first.startswith(b'#!') and b'python' in first
 
 
 def directory_size(path):
