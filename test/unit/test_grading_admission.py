@@ -46,13 +46,13 @@ def test_a_submission_s_runs_count_at_what_its_own_code_costs():
     submission is counted at its own cost, another's at the class's median."""
     admission = Admission(2, 0.94, 8)
     admission.counted(ran(1.7), 'busy_loops')
-    admission.counted(ran(0.3), 'quiet')
+    admission.counted(ran(0.2), 'quiet')
     admission.counted(ran(1.0), 'middle')
     assert admission.per_run('busy_loops') == pytest.approx(1.7)
-    assert admission.per_run('quiet') == pytest.approx(0.3)
+    assert admission.per_run('quiet') == pytest.approx(0.2)
     assert admission.per_run('new') == pytest.approx(1.0)      # the class's median
     admission.started('busy_loops-melodic', 1.0, 'busy_loops')
-    assert admission.may_start(1.0, 'quiet')                   # 1.7 + 0.3 <= 2
+    assert admission.may_start(1.0, 'quiet')       # 1.7 + 0.2 <= 2 but the teacher's 0.1
     assert not admission.may_start(1.0, 'middle')              # 1.7 + 1.0 > 2
     admission.counted(ran(0.9), 'busy_loops')                  # its dearest run counts
     assert admission.per_run('busy_loops') == pytest.approx(1.7)

@@ -11,10 +11,16 @@ s, from their control group: the record's ``cpu_s`` and ``sim_time``), at the
 real-time factor it is run at; a submission not yet measured whose Python has a
 loop that can go round without waiting (plan.busy_loops) is counted
 :data:`BUSY` cores dearer, as such a loop keeps a core busy. The queue is taken in order, each run that
-fits the free cores started (first fit: a cheap run starts beside a dear one
+fits the free cores (but :data:`TEACHER`, the grading's own) started (first fit: a cheap run starts beside a dear one
 where the next in line would not fit); ``--jobs`` is only the most at once.
-The first run always starts, whatever it is expected to cost. A resumed
-grading counts the costs of the runs it keeps from the start.
+The first run always starts, whatever it is expected to cost. A running run's
+cost is read as it runs (cpu.Pace: from its 20th simulated s, every 10 wall s,
+counted :data:`LIVE_MARGIN` dearer) and counts at once, for it and for what is
+not yet measured: a second run starts beside the first within a minute of its
+start, not when the first has ended, and a submission thought dear (a busy
+loop) that is not is counted at what it costs. A run whose commands are asked
+to end counts :data:`ENDING` cores from then on: the next one starts as it ends. A resumed grading counts the
+costs of the runs it keeps from the start.
 
 A run that was starved all the same (the machine was busier than measured: a
 submission that costs more than the others, another program) is run again
@@ -32,6 +38,12 @@ MIN_SIM = 10.0            # simulated s a run must have lasted for its cost to c
 QUANTILE = 0.5            # an unmeasured submission's run counted at the class's median
 BUSY = 0.8                # cores more for one whose Python loops without waiting (a real
                           # class: 0.9 to 1.2 cores of student code, the others 0.1 to 0.5)
+LIVE_MARGIN = 1.1         # a running run's pace counted this much dearer: its start-up is
+                          # not in it, and a dog that slept so far may play from now on
+TEACHER = 0.1             # cores the grading's own process keeps busy beside the runs (Dask,
+                          # each run's monitor and ground truth): 26 CPU s of a 383 s grading
+ENDING = 0.1              # cores an ending run is counted at: its nodes stopping, its
+                          # record packed (a real class: 1 to 16 wall s of a run's 250)
 STARVED_NOTE = 'run again: its first run was starved (%.2f of real time)'
 
 
@@ -71,6 +83,8 @@ class Admission(object):
         self.costs = []             # measured, CPU s per simulated s
         self.mine = {}              # submission -> its runs' measured costs
         self.running = {}           # label -> cores counted for it
+        self.asked = {}             # label -> (its submission, the factor it runs at)
+        self.paces = {}             # label -> its pace as it runs (CPU s per simulated s)
         self.busy = set()           # submissions whose Python loops without waiting
 
     def expect_busy(self, name):
@@ -85,10 +99,15 @@ class Admission(object):
         submission that loops without waiting)."""
         if name is not None and self.mine.get(name):
             return max(self.mine[name])
+        running = [pace for label, pace in self.paces.items()
+                   if self.asked.get(label, (None,))[0] == name]
+        if name is not None and running:
+            return max(running)
         extra = BUSY if name in self.busy else 0.0
-        if not self.costs:
+        known = self.costs + list(self.paces.values())
+        if not known:
             return self.first + extra
-        ordered = sorted(self.costs)
+        ordered = sorted(known)
         return ordered[int(round(QUANTILE * (len(ordered) - 1)))] + extra
 
     def need(self, rtf, name=None):
@@ -107,10 +126,30 @@ class Admission(object):
         if len(self.running) >= self.most:
             return False
         return self.cores is None or sum(self.running.values()) + self.need(rtf, name) <= \
-            self.cores + 1e-9
+            self.cores - TEACHER + 1e-9
 
     def started(self, label, rtf, name=None):
         self.running[label] = self.need(rtf, name)
+        self.asked[label] = (name, rtf)
+
+    def pace(self, label, pace):
+        """Running run ``label`` costs ``pace`` CPU s per simulated s as it runs
+        (cpu.Pace): counted at it from now on (LIVE_MARGIN dearer), and for the
+        runs not yet measured."""
+        if label not in self.running or pace is None or pace < 0:
+            return
+        name, rtf = self.asked[label]
+        self.paces[label] = pace * LIVE_MARGIN
+        if self.cores is not None and rtf:
+            self.running[label] = self.paces[label] * rtf
+
+    def ending(self, label):
+        """Running run ``label`` is ending (its commands asked to end, its record
+        being packed): it is counted at :data:`ENDING` cores from now on, so that the
+        next run builds and starts as it ends; its cost is counted when it is back."""
+        if label in self.running:
+            self.running[label] = min(self.running[label], ENDING)
+            self.paces.pop(label, None)
 
     def counted(self, result, name=None):
         """A finished run's cost counted (one kept by a resumed grading too)."""
@@ -124,6 +163,8 @@ class Admission(object):
         """A run came back: its cost counted. True when it is to be run again
         (starved, the first time)."""
         self.running.pop(label, None)
+        self.asked.pop(label, None)
+        self.paces.pop(label, None)
         self.counted(result, name)
         return starved(result) is not None
 
@@ -132,4 +173,5 @@ class Admission(object):
         if self.cores is None:
             return self.most
         need = self.need(rtf)
-        return max(1, min(self.most, int(self.cores / need + 1e-9) if need else self.most))
+        return max(1, min(self.most, int((self.cores - TEACHER) / need + 1e-9) if need
+                                    else self.most))

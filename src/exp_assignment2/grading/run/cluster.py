@@ -69,12 +69,14 @@ def _task(payload, data, token):
     payload = dict(payload, data=data)
     worker = get_worker()
     key = getattr(worker, 'get_current_task', lambda: None)()
-    Queue(STARTS + token).put({'label': payload['label'], 'worker': worker.address,
-                               'attempt': payload.get('attempt') or 1, 'time': time.time()})
+    starts = Queue(STARTS + token)
+    starts.put({'label': payload['label'], 'worker': worker.address,
+                'attempt': payload.get('attempt') or 1, 'time': time.time()})
     if Event(NO_NEW + token).is_set():      # after the announcement: see Cluster.stop_starting
         return {'skipped': True}
     stop = Event(STOP + token)
-    return tasks.run_task(payload, stop=lambda: stop.wait(1.0) or not _wanted(worker, key))
+    return tasks.run_task(payload, stop=lambda: stop.wait(1.0) or not _wanted(worker, key),
+                          report=lambda news: starts.put(dict(news, label=payload['label'])))
 
 
 class Cluster(object):
@@ -108,6 +110,8 @@ class Cluster(object):
         self.starts = Queue(STARTS + self.token, client=self.client)
         self.started = {}           # label -> [worker address, ...] (more than one: run again)
         self.attempts = {}          # label -> the attempt of each of those starts
+        self.paces = {}             # label -> what its run costs as it runs, not yet read
+        self.ending = set()         # labels of the runs ending, not yet read
         self.version = tasks.package_version()
         self.workers = self._eligible_workers()
 
@@ -151,8 +155,16 @@ class Cluster(object):
                                       '-%d' % attempt if attempt > 1 else ''))
 
     def poll_starts(self):
-        """Read the start announcements (what runs where, and which started again)."""
+        """Read the start announcements (what runs where, and which started again)
+        and the running runs' paces (``paces``: CPU s per simulated s as they run)
+        and ends (``ending``: their commands asked to end)."""
         for start in self.starts.get(batch=True):      # what is there now, without waiting
+            if 'pace' in start:
+                self.paces[start['label']] = start['pace']
+            if start.get('ending'):
+                self.ending.add(start['label'])
+            if 'worker' not in start:
+                continue
             self.started.setdefault(start['label'], []).append(start['worker'])
             self.attempts.setdefault(start['label'], []).append(start.get('attempt') or 1)
 

@@ -43,3 +43,32 @@ def snapshot(pids):
         cpu[name] = round(cpu.get(name, 0.0) + seconds, 2)
         memory[name] = round(memory.get(name, 0.0) + resident / 2 ** 20, 1)
     return cpu, memory
+
+
+WARM = 20.0          # simulated s before a run's pace is read: its start (roslaunch, the
+                     # spawns, a node's first frames) is not what it costs from then on
+LOOK = 10.0          # wall s between two looks, and simulated s a pace is read over at least
+
+
+class Pace(object):
+    """What a running run costs, read as it runs: the CPU s its processes used
+    per simulated s since :data:`WARM` (``cost``, None until read). A
+    process that ended in between takes its CPU with it: the pace is what the
+    run costs from now on, not what it cost."""
+
+    def __init__(self):
+        self.base, self.last, self.cost = None, None, None
+
+    def look(self, pids, sim, now):
+        """At simulated s ``sim`` and wall ``now``: the new cost when one was read, else None."""
+        if sim is None or sim < WARM or (self.last is not None and now - self.last < LOOK):
+            return None
+        self.last = now
+        used = sum(snapshot(pids)[0].values())
+        if self.base is None or used < self.base[0]:
+            self.base = (used, sim)
+            return None
+        if sim - self.base[1] < LOOK:
+            return None
+        self.cost = (used - self.base[0]) / (sim - self.base[1])
+        return self.cost

@@ -1,7 +1,8 @@
 """The grading's runs sent to the cluster and received on the teacher's side
 (no ROS): each run a Dask task, or, when it cannot be sent (refused,
 rejected, not sendable), its record made here; each sent when the cores
-it needs are free (run.admission), a starved one again after the others;
+it needs are free (run.admission, counting what the running ones cost as
+they run), a starved one again after the others;
 each run that comes back
 unpacked with the teacher's part of its record, or lost; a run whose checks
 failed in a release it was not told run again in the next; a run a
@@ -176,6 +177,12 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None, admission
                     _received_in_time(pending, futures, cluster, receive)
                     break
             cluster.poll_starts()
+            paces = getattr(cluster, 'paces', {})      # what the running runs cost as they run
+            while paces:
+                admission.pace(*paces.popitem())
+            ending = getattr(cluster, 'ending', set())  # and those that cost little from now
+            while ending:
+                admission.ending(ending.pop())
             for future in [f for f in pending if f.done()]:
                 pending.discard(future)
                 receive(futures[future], future)

@@ -46,6 +46,7 @@ def watch(run, box, truth, plan, rtf, result):
     asked = None            # when the driver was asked to end its commands
     run.state = 'building'
     last_size_check = 0.0
+    pace = cpu.Pace()
     while True:
         run.news.wait(0.25)       # a driver event, or the limits' next look
         run.news.clear()
@@ -63,6 +64,9 @@ def watch(run, box, truth, plan, rtf, result):
         facts.cancelled = run.stop_event.is_set()
         facts.truth = truth.latest
         ending.note_pace(facts, now)
+        if facts.truth is not None and pace.look(box.groups.pids(), facts.truth[0],
+                                                    now) is not None:
+            run.pace = pace.cost      # the teacher's side admits runs by it (tasks._watch)
         facts.all_exited = all_exited(events)
         if facts.built_at is not None and not facts.required_died:
             facts.required_died = required.death()

@@ -72,6 +72,7 @@ class Run(object):
         self.stop_event = stop_event or threading.Event()
         self.events, self.state = [], 'waiting'
         self.news = threading.Event()       # the driver said something (monitor.watch)
+        self.pace = None        # CPU s per simulated s as it runs (monitor.watch, cpu.Pace)
         self.result = None
         self.planned = None     # what the teacher's side planned it from (run.resume)
         self.notes = []         # the teacher's side's on it: why it was run again (run.admission)

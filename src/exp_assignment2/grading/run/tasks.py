@@ -134,12 +134,19 @@ def unpack_run(data, run_dir):
     return own
 
 
-def _watch(run, stop):
-    """Until the run is over, ask ``stop`` whether the teacher cancelled it.
-    A ``stop`` that fails (the grading's connection closing as it ends) is
-    no cancellation: the run goes on, and nothing is printed."""
+def _watch(run, stop, report=None):
+    """Until the run is over, ask ``stop`` whether the teacher cancelled it,
+    and tell ``report`` each new pace of the run (``{'pace': CPU s per
+    simulated s}`` as it runs, cpu.Pace) and, once, that it is ending
+    (``{'ending': True}``: its commands asked to end, it costs little from
+    then on). A ``stop`` or ``report`` that fails (the grading's connection
+    closing as it ends) is no cancellation: the run goes on, and nothing is
+    printed."""
+    told = {}
     while not run.stop_event.is_set() and run.state != 'done':
         try:
+            if report is not None:
+                _tell(run, told, report)
             cancelled = stop()
         except Exception:       # noqa: BLE001 (Dask's comm errors have no common base)
             if run.state == 'done':
@@ -151,12 +158,23 @@ def _watch(run, stop):
             return
 
 
-def run_task(payload, stop=None, scratch_root=None):
+def _tell(run, told, report):
+    """What ``report`` was not yet told of ``run`` (``told``: what it was)."""
+    if run.pace is not None and run.pace != told.get('pace'):
+        told['pace'] = run.pace
+        report({'pace': run.pace})
+    if run.state == 'ending' and not told.get('ending'):
+        told['ending'] = True
+        report({'ending': True})
+
+
+def run_task(payload, stop=None, scratch_root=None, report=None):
     """Run one payload (see cluster.payload) here; returns {'archive': the run's
     directory (pack_run), 'cut': what of it was not sent whole}.
 
     ``stop``: a function that waits a moment (a second) and says whether the
-    teacher cancelled the grading; called until the run is over."""
+    teacher cancelled the grading; called until the run is over. ``report``:
+    told each new pace of the run and its ending (_watch)."""
     mine = package_version()
     if payload['version'] != mine:
         raise VersionMismatch('this worker has exp_assignment2 %s, the teacher %s: it '
@@ -178,7 +196,8 @@ def run_task(payload, stop=None, scratch_root=None):
         run = Run(settings, spec, submission=submission)
         watcher = None
         if stop is not None:
-            watcher = threading.Thread(target=_watch, args=(run, stop), daemon=True)
+            watcher = threading.Thread(target=_watch, args=(run, stop, report),
+                                       daemon=True)
             watcher.start()
         try:
             run.go()
