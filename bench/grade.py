@@ -48,6 +48,7 @@ REPO = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(REPO, 'test'))
 import course_shaped  # noqa: E402
 import grading_fixtures  # noqa: E402
+import simulator_cost  # noqa: E402 -- bench/, beside this file
 
 
 KINDS = ('simulator', 'display', 'viewer', 'student', 'ROS', 'grader')
@@ -132,7 +133,7 @@ def class_cost(runs, count, wall, cores=None):
                 again, '%.2f' % min(factors) if factors else '-'))
 
 
-def print_cpu(runs, jobs, profile):
+def print_cpu(runs, jobs, profile, out=None):
     per_kind = cpu_per_run(runs)
     if not per_kind['all']:
         print('no run reported its CPU')
@@ -157,6 +158,8 @@ def print_cpu(runs, jobs, profile):
     if memory:
         print('peak memory of a sandbox: %.0f MB (median), %.0f MB (max)' % (
             statistics.median(memory), max(memory)))
+    if out:
+        simulator_cost.print_by_world(out, runs)
 
 
 def grade(folder, out, jobs, duration, rtf, scheduler=None):
@@ -210,16 +213,16 @@ def main(argv):
             args.duration, args.real_time_factor))
         detail = grade_rows(args, folder, scratch, count, args.jobs)
         if detail:
-            print_cpu(detail[1]['runs'], detail[0], detail[1]['profile'])
+            print_cpu(detail[1]['runs'], detail[0], detail[1]['profile'], detail[2])
     if 'mixed' in args.classes and not args.fixtures and not args.scheduler:
         mixed = make_mixed(os.path.join(scratch, 'mixed-class'))
         print('grading a class of real shape (%d submissions of %g simulated s: %d '
               'course-shaped, %s), at the grader\'s default' % (
                   len(os.listdir(mixed)) - 1, args.duration, MIXED_COURSE_SHAPED,
                   ', '.join(MIXED_FIXTURES), ))
-        report = grade_rows(args, mixed, scratch, len(os.listdir(mixed)) - 1, [None],
-                            name='mixed', goal=False)[1]
-        print_cpu(report['runs'], None, report['profile'])
+        _, report, out = grade_rows(args, mixed, scratch, len(os.listdir(mixed)) - 1, [None],
+                                    name='mixed', goal=False)
+        print_cpu(report['runs'], None, report['profile'], out)
     print('reports in %s' % scratch)
 
 
@@ -239,9 +242,9 @@ def grade_rows(args, folder, scratch, count, jobs_list, name='jobs', goal=True):
         'same', 'verdicts'))
     first, detail = None, None
     for jobs in ([None] if args.scheduler else jobs_list):
-        wall, report, _ = grade(folder, os.path.join(scratch, '%s%s' % (name, jobs or '')),
-                                      jobs, args.duration, args.real_time_factor,
-                                      args.scheduler)
+        out = os.path.join(scratch, '%s%s' % (name, jobs or ''))
+        wall, report, _ = grade(folder, out, jobs, args.duration, args.real_time_factor,
+                                args.scheduler)
         verdicts = {s['name']: s['verdict'] for s in report['submissions']}
         first = first or verdicts
         runs = report['runs']
@@ -263,7 +266,7 @@ def grade_rows(args, folder, scratch, count, jobs_list, name='jobs', goal=True):
         if goal:
             print('     ' + goal_line(args, count, wall, factors))
         if detail is None:
-            detail = (jobs, report)
+            detail = (jobs, report, out)
     return detail
 
 

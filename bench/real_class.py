@@ -167,6 +167,7 @@ def print_cost(out, wall):
         wall = max(b for _, b in spans) - min(a for a, _ in spans) if spans else 0.0
     print('%s: %s' % (os.path.basename(out), bench_grade.class_cost(
         runs, len(graded['submissions']), wall)))
+    bench_grade.print_cpu(runs, None, graded['profile'], out)
 
 
 if __name__ == '__main__':

@@ -120,3 +120,36 @@ def test_an_ending_run_counts_little_and_the_next_starts_as_it_ends(tmp_path, no
     dispatch.grade(runs_of(tmp_path, ['a', 'b']), cluster, Progress(cluster), copies=None,
                    admission=Admission(2, 1.6, 8))
     assert ['a', 'b'] in cluster.at_once
+
+
+def test_the_teacher_s_side_reads_starts_paces_and_ends_from_one_queue():
+    from exp_assignment2.grading.run.cluster import Cluster as DaskCluster
+
+    class Queue(object):
+        def get(self, batch=False):
+            return [{'label': 'a', 'worker': 'tcp://w:1', 'attempt': 1, 'time': 0.0},
+                    {'label': 'a', 'pace': 0.42}, {'label': 'b', 'pace': 0.9},
+                    {'label': 'a', 'pace': 0.44}, {'label': 'b', 'ending': True}]
+    cluster = DaskCluster.__new__(DaskCluster)
+    cluster.starts, cluster.started, cluster.attempts = Queue(), {}, {}
+    cluster.paces, cluster.ending = {}, set()
+    cluster.poll_starts()
+    assert cluster.started == {'a': ['tcp://w:1']} and cluster.attempts == {'a': [1]}
+    assert cluster.paces == {'a': 0.44, 'b': 0.9} and cluster.ending == {'b'}
+
+
+def test_one_that_spins_is_counted_on_the_profile_s_figure_when_the_class_s_is_cheaper():
+    """A real class: three runs whose camera nobody watched pulled the median to 0.36;
+    a spinning submission counted at 0.36 + BUSY started beside a run of 0.71 and
+    starved at 1.31 cores. It is counted at max(median, profile) + BUSY."""
+    admission = Admission(2, 0.76, 8)
+    admission.expect_busy('spins')
+    for cores in (0.22, 0.23, 0.36, 0.78, 0.81):
+        admission.costs.append(cores)
+    assert admission.per_run('quiet') == pytest.approx(0.36)
+    assert admission.per_run('spins') == pytest.approx(0.76 + BUSY)
+    admission.started('other', 1.0, 'other')
+    admission.pace('other', 0.71 / LIVE_MARGIN)
+    assert not admission.may_start(1.0, 'spins')
+    admission.costs[:] = [1.0, 1.1, 1.2]
+    assert admission.per_run('spins') == pytest.approx(1.1 + BUSY)

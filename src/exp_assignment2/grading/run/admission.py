@@ -10,7 +10,10 @@ that finished, else the profile's ``cpu_per_run`` (their CPU s per simulated
 s, from their control group: the record's ``cpu_s`` and ``sim_time``), at the
 real-time factor it is run at; a submission not yet measured whose Python has a
 loop that can go round without waiting (plan.busy_loops) is counted
-:data:`BUSY` cores dearer, as such a loop keeps a core busy. The queue is taken in order, each run that
+:data:`BUSY` cores dearer than the median or the profile's figure, whichever is
+more, as such a loop keeps a core busy (a real class's cheap runs, whose camera
+nobody watched, pulled the median to 0.36 and started a run of 1.31 cores beside
+one of 0.71: it starved). The queue is taken in order, each run that
 fits the free cores (but :data:`TEACHER`, the grading's own) started (first fit: a cheap run starts beside a dear one
 where the next in line would not fit); ``--jobs`` is only the most at once.
 The first run always starts, whatever it is expected to cost. A running run's
@@ -96,19 +99,19 @@ class Admission(object):
         """CPU s per simulated s counted for a run of submission ``name``: what its own
         runs measured (the most of them: its releases, repeats and episodes run the same
         code), else the class's median, else the profile's figure (BUSY more for a
-        submission that loops without waiting)."""
+        submission that loops without waiting, on the median or the profile's figure,
+        whichever is more)."""
         if name is not None and self.mine.get(name):
             return max(self.mine[name])
         running = [pace for label, pace in self.paces.items()
                    if self.asked.get(label, (None,))[0] == name]
         if name is not None and running:
             return max(running)
-        extra = BUSY if name in self.busy else 0.0
-        known = self.costs + list(self.paces.values())
-        if not known:
-            return self.first + extra
-        ordered = sorted(known)
-        return ordered[int(round(QUANTILE * (len(ordered) - 1)))] + extra
+        known = sorted(self.costs + list(self.paces.values()))
+        median = known[int(round(QUANTILE * (len(known) - 1)))] if known else self.first
+        if name in self.busy:       # one that spins watches its camera and works: never
+            return max(median, self.first) + BUSY   # the median of runs that hardly ran
+        return median
 
     def need(self, rtf, name=None):
         """Cores a run at real-time factor ``rtf`` is counted at (0, as fast
