@@ -1,8 +1,9 @@
 """What the simulator's cost in a grading's runs went with (issue 61): for each
 run, the simulator's cores at real time (its CPU s per simulated s) beside what
 the student's world and nodes made it do, read from the simulator's own log in
-the run's folder: the camera frames it drew a simulated s (a still scene is not
-drawn again; a camera nobody watches is not drawn at all), the most nodes that
+the run's folder: the camera frames it drew a simulated s, counted in frames of
+the course camera's 800 x 800 pixels (llvmpipe pays for pixels; a still scene is
+not drawn again; a camera nobody watches is not drawn at all), the most nodes that
 took ``/clock`` at once (every one gets every tick) and the models in the world.
 Then the least-squares line through the runs, which says by how much each moves it.
 Used by bench/grade.py and bench/real_class.py."""
@@ -11,7 +12,9 @@ import os
 import re
 
 MODELS = re.compile(r'simulator: (\d+) models')
-FRAMES = re.compile(r'camera \S+: (\d+) frames, (\d+) of them of a still scene')
+FRAMES = re.compile(r'camera \S+: (\d+) frames, (\d+) of them of a still scene'
+                    r'(?: \(not drawn again\), (\d+) x (\d+))?')
+COURSE_PIXELS = 800 * 800       # the course camera's: a log without the size is of it
 CLOCK = re.compile(r'topic\[/clock\] (adding|removing) connection')
 
 
@@ -30,7 +33,8 @@ def simulator_log(out, run):
 
 
 def world_facts(path):
-    """{'models', 'drawn', 'still', 'clock'} from a simulator's log."""
+    """{'models', 'drawn' (in 800 x 800 frames), 'still', 'clock'} from a simulator's log
+    (one written before it gave the camera's size: the course camera's)."""
     facts = {'models': 0, 'drawn': 0, 'still': 0, 'clock': 0}
     now = 0
     with open(path, errors='replace') as f:
@@ -40,7 +44,10 @@ def world_facts(path):
                 facts['models'] = max(facts['models'], int(found.group(1)))
             found = FRAMES.search(line)
             if found:
-                facts['drawn'] += int(found.group(1)) - int(found.group(2))
+                drawn = int(found.group(1)) - int(found.group(2))
+                pixels = int(found.group(3)) * int(found.group(4)) if found.group(3) else \
+                    COURSE_PIXELS
+                facts['drawn'] += drawn * pixels / COURSE_PIXELS
                 facts['still'] += int(found.group(2))
             found = CLOCK.search(line)
             if found:
@@ -81,7 +88,8 @@ def print_by_world(out, runs):
         print('the simulator\'s cost by world: no simulator log in %s' % out)
         return
     print('the simulator\'s cost by what the world made it do (cores at real time; camera '
-          'frames drawn a simulated s; the most nodes taking /clock at once; models):')
+          'frames drawn a simulated s, in 800 x 800 frames; the most nodes taking /clock at '
+          'once; models):')
     for label, cores, drawn, clock, models in sorted(found, key=lambda r: r[1]):
         print('  %-24s %5.2f  %5.1f frames/s  %3d on /clock  %3d models' % (
             label, cores, drawn, clock, models))

@@ -192,7 +192,9 @@ class CameraPlugin(Plugin):
         self.worker.drain()
         if sum(self.frames):
             self.engine.log.info('camera %s: %d frames, %d of them of a still scene (not drawn '
-                                 'again)' % (self.spec.name, sum(self.frames), self.frames[1]))
+                                 'again), %d x %d' % (self.spec.name, sum(self.frames),
+                                                      self.frames[1], self.spec.width,
+                                                      self.spec.height))
         for watched in (self.jpeg, self.raw, self.info_pub):
             watched.pub.unregister()
 
