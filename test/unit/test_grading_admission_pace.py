@@ -53,6 +53,9 @@ def test_a_running_run_counts_at_its_pace_for_it_and_for_what_is_not_measured():
     assert admission.running['quiet'] == pytest.approx(1.2 * LIVE_MARGIN)
     assert not admission.may_start(1.0, 'third')
     admission.pace('gone', 0.1)                       # a run no longer running: nothing
+    for wrong in (float('nan'), float('inf'), -1.0, None, 'fast'):
+        admission.pace('quiet', wrong)                # a pace that is no pace: as it was
+    assert admission.running['quiet'] == pytest.approx(1.2 * LIVE_MARGIN)
     assert 'gone' not in admission.running
     admission.ended('spins', ran(0.52), 'spins')      # its end: the measured cost counts
     assert admission.per_run('spins') == pytest.approx(0.52)

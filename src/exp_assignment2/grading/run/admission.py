@@ -12,18 +12,21 @@ real-time factor it is run at; a submission not yet measured whose Python has a
 loop that can go round without waiting (plan.busy_loops) is counted
 :data:`BUSY` cores dearer than the median or the profile's figure, whichever is
 more, as such a loop keeps a core busy (a real class's cheap runs, whose camera
-nobody watched, pulled the median to 0.36 and started a run of 1.31 cores beside
-one of 0.71: it starved). The queue is taken in order, each run that
-fits the free cores (but :data:`TEACHER`, the grading's own) started (first fit: a cheap run starts beside a dear one
-where the next in line would not fit); ``--jobs`` is only the most at once.
-The first run always starts, whatever it is expected to cost. A running run's
-cost is read as it runs (cpu.Pace: from its 20th simulated s, every 10 wall s,
-counted :data:`LIVE_MARGIN` dearer) and counts at once, for it and for what is
-not yet measured: a second run starts beside the first within a minute of its
-start, not when the first has ended, and a submission thought dear (a busy
-loop) that is not is counted at what it costs. A run whose commands are asked
-to end counts :data:`ENDING` cores from then on: the next one starts as it ends. A resumed grading counts the
-costs of the runs it keeps from the start.
+nobody watched, pulled the median to 0.36 and started a run of 1.31 cores
+beside one of 0.71: it starved). The queue is taken in order, each run that
+fits the free cores (but :data:`TEACHER`, the grading's own) started (first
+fit: a cheap run starts beside a dear one where the next in line would not
+fit); ``--jobs`` is only the most at once. The first run always starts,
+whatever it is expected to cost.
+
+A running run's cost is read as it runs (cpu.Pace: from its 20th simulated s,
+every 10 wall s, counted :data:`LIVE_MARGIN` dearer) and counts at once, for it
+and for what is not yet measured: a second run starts beside the first within
+a minute of its start, not when the first has ended, and a submission thought
+dear (a busy loop) that is not is counted at what it costs. A run whose
+commands are asked to end counts :data:`ENDING` cores from then on: the next
+one starts as it ends. A resumed grading counts the costs of the runs it keeps
+from the start.
 
 A run that was starved all the same (the machine was busier than measured: a
 submission that costs more than the others, another program) is run again
@@ -35,6 +38,7 @@ machine's time goes to a run that will not count
 worker's ``runs`` resource is the limit, and the starved runs are run again
 after the others there too.
 """
+import math
 
 STARVED = 0.95            # of the factor asked: below it, a run was starved
 MIN_SIM = 10.0            # simulated s a run must have lasted for its cost to count
@@ -139,9 +143,10 @@ class Admission(object):
         """Running run ``label`` costs ``pace`` CPU s per simulated s as it runs
         (cpu.Pace): counted at it from now on (LIVE_MARGIN dearer), and for the
         runs not yet measured."""
-        if label not in self.running or pace is None or pace < 0:
+        if label not in self.running or not isinstance(pace, (int, float)) or \
+                not math.isfinite(pace) or pace < 0:
             return
-        name, rtf = self.asked[label]
+        rtf = self.asked[label][1]
         self.paces[label] = pace * LIVE_MARGIN
         if self.cores is not None and rtf:
             self.running[label] = self.paces[label] * rtf
