@@ -69,7 +69,6 @@ def test_the_second_run_starts_beside_the_first_once_its_pace_is_told(tmp_path, 
     facts = {n: [ran(0.4)] for n in ('a', 'b', 'c')}
 
     class PacedCluster(CostlyCluster):
-        paces = {}
         told = False
 
         def poll_starts(self):
@@ -110,8 +109,6 @@ def test_an_ending_run_counts_little_and_the_next_starts_as_it_ends(tmp_path, no
     assert 'gone' not in admission.running
 
     class EndingCluster(CostlyCluster):
-        ending = set()
-
         def poll_starts(self):
             CostlyCluster.poll_starts(self)
             for label in self.started:

@@ -72,7 +72,7 @@ def test_a_rejected_submission_is_not_built_without_a_worker(tmp_path):
     run = Run(RunSettings(profile, str(tmp_path / 'runs')), spec)
 
     class NoCluster(object):
-        version = '0'
+        version, paces, ending = '0', {}, set()
 
         def submit(self, payload):
             raise AssertionError('nothing to send')
@@ -101,7 +101,7 @@ def test_a_run_that_cannot_be_sent_is_its_grader_error(tmp_path, monkeypatch):
     monkeypatch.setattr(dispatch, 'payload', lambda run, version, copies: {}['data'])
 
     class NoCluster(object):
-        version, started = '0', {}
+        version, started, paces, ending = '0', {}, {}, set()
 
         def poll_starts(self):
             pass

@@ -54,6 +54,7 @@ class Cluster(object):
     version, started = '0.1.0', {}
     sent = []
     payloads = {}
+    paces, ending = {}, set()
 
     def __init__(self, *args, **kwargs):
         pass

@@ -45,6 +45,7 @@ class Cluster(object):
     def __init__(self, slots=1):
         self.slots, self.started, self.futures = slots, {}, []
         self.sent, self.cancelled, self.no_new, self.stopped_now = [], [], False, False
+        self.paces, self.ending = {}, set()     # none told: each run at its estimate
 
     def submit(self, payload):
         self.sent.append(payload['label'])

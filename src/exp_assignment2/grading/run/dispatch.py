@@ -177,12 +177,10 @@ def grade(runs, cluster, progress, copies, stopping=None, resume=None, admission
                     _received_in_time(pending, futures, cluster, receive)
                     break
             cluster.poll_starts()
-            paces = getattr(cluster, 'paces', {})      # what the running runs cost as they run
-            while paces:
-                admission.pace(*paces.popitem())
-            ending = getattr(cluster, 'ending', set())  # and those that cost little from now
-            while ending:
-                admission.ending(ending.pop())
+            while cluster.paces:        # what the running runs cost as they run
+                admission.pace(*cluster.paces.popitem())
+            while cluster.ending:       # and those that cost little from now on
+                admission.ending(cluster.ending.pop())
             for future in [f for f in pending if f.done()]:
                 pending.discard(future)
                 receive(futures[future], future)
