@@ -69,9 +69,6 @@ FIELDS = (
     ('wall_time', 'wall s from the start of the driver to the end'),
     ('cpu_s', "the run's processes' CPU s when it was asked to end"),
     ('memory_mb', 'and their memory then'),
-    ('spinning', "the student's threads that never waited, run on what CPU the others left "
-                 '(run.spinning): threads (command, thread name), their CPU s then, the cores '
-                 'the run is counted at for them'),
     ('peak_memory_mb', "the sandbox's peak memory"),
     ('oom', 'the memory limit killed a process'),
     ('all_gone', "every process of the sandbox was gone once killed"),

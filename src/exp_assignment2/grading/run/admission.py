@@ -69,16 +69,12 @@ def starved(result):
 
 def cost(result):
     """Cores a finished run kept busy per unit of real-time factor (CPU s
-    per simulated s), or None when it did not run long enough to say; its
-    threads that spun (run.spinning) at what they are counted at, not at what
-    they used."""
+    per simulated s), or None when it did not run long enough to say."""
     result = result or {}
     cpu, sim = result.get('cpu_s') or {}, (result.get('truth') or {}).get('sim_time') or 0.0
     if not cpu or sim < MIN_SIM:
         return None
-    spun = result.get('spinning') or {}
-    return max(0.0, sum(cpu.values()) - (spun.get('cpu_s') or 0.0)) / sim + \
-        (spun.get('counted') or 0.0)
+    return sum(cpu.values()) / sim
 
 
 class Admission(object):

@@ -54,13 +54,9 @@ class Pace(object):
     """What a running run costs, read as it runs: the CPU s its processes used
     per simulated s since :data:`WARM` (``cost``, None until read). A
     process that ended in between takes its CPU with it: the pace is what the
-    run costs from now on, not what it cost. With ``spinners``
-    (:class:`~exp_assignment2.grading.run.spinning.Spinners`), the threads found
-    spinning at each look are moved out of the others' way and counted at what
-    ``spinners.counted`` says instead of what they used."""
+    run costs from now on, not what it cost."""
 
-    def __init__(self, spinners=None):
-        self.spinners = spinners
+    def __init__(self):
         self.base, self.last, self.cost = None, None, None
 
     def look(self, pids, sim, now):
@@ -68,18 +64,11 @@ class Pace(object):
         if sim is None or sim < WARM or (self.last is not None and now - self.last < LOOK):
             return None
         self.last = now
-        pids = list(pids)
-        table = self.spinners.look(pids, now) if self.spinners is not None else {}
         used = sum(snapshot(pids)[0].values())
         if self.base is None or used < self.base[0]:
-            self.base = (used, sim, table)
+            self.base = (used, sim)
             return None
         if sim - self.base[1] < LOOK:
             return None
-        span = sim - self.base[1]
-        self.cost = (used - self.base[0]) / span
-        if self.spinners is not None and self.spinners.found:
-            spun = self.spinners.cpu_s(table) - sum(
-                self.base[2][tid][1] for tid in self.spinners.found if tid in self.base[2])
-            self.cost = max(0.0, self.cost - spun / span) + self.spinners.counted(table)
+        self.cost = (used - self.base[0]) / (sim - self.base[1])
         return self.cost

@@ -14,7 +14,6 @@ from exp_assignment2.grading.paths import INSIDE
 from exp_assignment2.grading.plan import starts
 from exp_assignment2.grading.run import cpu
 from exp_assignment2.grading.run import ending
-from exp_assignment2.grading.run import spinning
 from exp_assignment2.grading.run.files import directory_size, log_sizes
 
 START_SLACK = 120.0          # wall s on top of the duration: set-up, starting, ending
@@ -47,8 +46,7 @@ def watch(run, box, truth, plan, rtf, result):
     asked = None            # when the driver was asked to end its commands
     run.state = 'building'
     last_size_check = 0.0
-    spinners = spinning.Spinners(spinning.SpinGroup(run.label))
-    pace = cpu.Pace(spinners)
+    pace = cpu.Pace()
     while True:
         run.news.wait(0.25)       # a driver event, or the limits' next look
         run.news.clear()
@@ -82,7 +80,6 @@ def watch(run, box, truth, plan, rtf, result):
         if reason:
             asked = now
             _ask_to_stop(proc, box, truth, run.work, reason, facts, result)
-            _spun(spinners, box.groups.pids(), result)
             run.state = 'ending'
     result.setdefault('log_sizes', log_sizes(run.work))
     result['all_gone'] = box.kill()
@@ -90,7 +87,6 @@ def watch(run, box, truth, plan, rtf, result):
     result['oom'] = box.groups.oom_killed()
     if result['all_gone']:
         box.groups.remove()
-        spinners.group.remove()
     reader.join(2.0)
     truth.close()
     result['truth'] = {'states': truth.states, 'frames': truth.frames,
@@ -123,17 +119,6 @@ def _ask_to_stop(proc, box, truth, work, reason, facts, result):
         proc.stdin.flush()
     except (OSError, ValueError):
         pass
-
-
-def _spun(spinners, pids, result):
-    """The threads that spun (run.spinning), in the record: what they used and
-    what the run is counted at for them (admission.cost)."""
-    if spinners.found:
-        table = spinning.threads(pids)
-        threads = list(spinners.found.values())
-        result['spinning'] = {'threads': threads, 'cpu_s': round(spinners.cpu_s(table), 2),
-                              'counted': spinners.counted(table)}
-        result.setdefault('notes', []).append(spinning.note(threads))
 
 
 def all_exited(events):
