@@ -13,7 +13,7 @@ import multiprocessing
 import os
 import sys
 
-from exp_assignment2.grading.plan import busy_loops
+from exp_assignment2.grading.plan import busy_loops, camera_load
 from exp_assignment2.grading.plan import planning
 from exp_assignment2.grading.plan import profiles
 from exp_assignment2.grading.report import gradebook
@@ -49,7 +49,25 @@ def admission(args, profile, runs, copies, log):
         admitting.expect_busy(name)
         log('%s: counted %g cores dearer until its run is measured: its Python loops without '
             'waiting (%s)' % (name, BUSY, ', '.join('%s:%d' % place for place in where[:3])))
+    cameras = camera_load.of_runs(runs, copies)
+    for name, frames in sorted(cameras.items()):
+        admitting.expect_frames(name, frames)
+    if len(set(cameras.values())) > 1:
+        log('cameras of %s frames of 800 x 800 a second (their robot files): each run counted at '
+            "the class's costs scaled to its camera until its own is measured"
+            % _by_value(cameras))
     return admitting
+
+
+def _by_value(values):
+    """``30 (12 submissions), 1.8 (a, b)``: the most common value counted, the others named."""
+    groups = {}
+    for name, value in sorted(values.items()):
+        groups.setdefault(round(value, 1), []).append(name)
+    common = max(groups, key=lambda v: len(groups[v]))
+    return ', '.join('%g (%s)' % (value, '%d submissions' % len(names) if value == common and
+                                  len(names) > 3 else ', '.join(names))
+                     for value, names in sorted(groups.items(), key=lambda g: -len(g[1])))
 
 
 def plan_runs(args, out, log, read, submissions, copies):

@@ -45,6 +45,13 @@ MIN_SIM = 10.0            # simulated s a run must have lasted for its cost to c
 QUANTILE = 0.5            # an unmeasured submission's run counted at the class's median
 BUSY = 0.8                # cores more for one whose Python loops without waiting (a real
                           # class: 0.9 to 1.2 cores of student code, the others 0.1 to 0.5)
+FIXED = 0.25              # of a run's cost, the part no camera frame makes (the simulator's
+                          # step, ROS, the display): a real class's runs with no frame drawn
+                          # cost 0.22 to 0.24 of a core against 0.62 to 0.66 at 30 frames a
+                          # second (0.35); the bench's mixed class, 0.12 to 0.18 at 1.8 (0.2)
+ALIKE = 1.5               # cameras whose frames a second are within this factor: alike
+REFERENCE_FRAMES = 30.0   # frames of 800 x 800 a second the profiles' cpu_per_run was measured
+                          # at (the course's camera: 800 x 800 at 30 Hz)
 LIVE_MARGIN = 1.1         # a running run's pace counted this much dearer: its start-up is
                           # not in it, and a dog that slept so far may play from now on
 TEACHER = 0.1             # cores the grading's own process keeps busy beside the runs (Dask,
@@ -65,6 +72,17 @@ def starved(result):
     if not achieved or not asked or not (result.get('truth') or {}).get('sim_time'):
         return None
     return achieved if achieved < STARVED * asked else None
+
+
+def camera_load(frames):
+    """A run's cost at ``frames`` of 800 x 800 a second (plan.camera_load), as a
+    share of its cost at REFERENCE_FRAMES: FIXED, and the rest in proportion."""
+    return FIXED + (1.0 - FIXED) * frames / REFERENCE_FRAMES
+
+
+def _median(values):
+    values = sorted(values)
+    return values[int(round(QUANTILE * (len(values) - 1)))]
 
 
 def cost(result):
@@ -93,11 +111,22 @@ class Admission(object):
         self.asked = {}             # label -> (its submission, the factor it runs at)
         self.paces = {}             # label -> its pace as it runs (CPU s per simulated s)
         self.busy = set()           # submissions whose Python loops without waiting
+        self.frames = {}            # submission -> its camera's frames of 800 x 800 a second
+        self.measured = []          # (submission, cost) of every finished run counted
 
     def expect_busy(self, name):
         """Submission ``name`` has a loop that can go round without waiting: until
         its own run is measured, it is counted BUSY cores dearer."""
         self.busy.add(name)
+
+    def expect_frames(self, name, frames):
+        """Submission ``name``'s robot files declare cameras of ``frames`` of 800 x 800
+        a second at most (plan.camera_load): until its own run is measured, it is
+        counted at the median of the runs of a camera alike (within ALIKE), else of
+        the class's costs scaled to its camera (camera_load), else at the profile's
+        figure scaled."""
+        if isinstance(frames, (int, float)) and math.isfinite(frames) and frames >= 0:
+            self.frames[name] = float(frames)
 
     def per_run(self, name=None):
         """CPU s per simulated s counted for a run of submission ``name``: what its own
@@ -111,11 +140,30 @@ class Admission(object):
                    if self.asked.get(label, (None,))[0] == name]
         if name is not None and running:
             return max(running)
-        known = sorted(self.costs + list(self.paces.values()))
-        median = known[int(round(QUANTILE * (len(known) - 1)))] if known else self.first
+        known = self.costs + list(self.paces.values())
+        median = _median(known) if known else self.first
+        first = self.first
+        frames = self.frames.get(name)
+        if frames is not None:
+            # the runs of a camera alike, else the class's costs each scaled from its camera
+            # to this one, else the profile's figure scaled
+            load, framed = camera_load(frames), self._framed()
+            alike = [c for c, f in framed if min(f, frames) * ALIKE >= max(f, frames)]
+            median = _median(alike) if alike else \
+                _median([c * load / camera_load(f) for c, f in framed]) if framed else \
+                first * load / camera_load(REFERENCE_FRAMES)
+            first *= load / camera_load(REFERENCE_FRAMES)
         if name in self.busy:       # one that spins watches its camera and works: never
-            return max(median, self.first) + BUSY   # the median of runs that hardly ran
+            return max(median, first) + BUSY    # the median of runs that hardly ran
         return median
+
+    def _framed(self):
+        """(cost, its camera's frames a second) of the measured and running runs whose
+        submission's camera is known."""
+        framed = [(c, self.frames[n]) for n, c in self.measured if n in self.frames]
+        return framed + [(pace, self.frames[self.asked[label][0]])
+                         for label, pace in self.paces.items()
+                         if self.asked.get(label, (None,))[0] in self.frames]
 
     def need(self, rtf, name=None):
         """Cores a run at real-time factor ``rtf`` is counted at (0, as fast
@@ -164,6 +212,7 @@ class Admission(object):
         measured = cost(result)
         if measured is not None:
             self.costs.append(measured)
+            self.measured.append((name, measured))
             if name is not None:
                 self.mine.setdefault(name, []).append(measured)
 
