@@ -13,7 +13,11 @@ loop that can go round without waiting (plan.busy_loops) is counted
 :data:`BUSY` cores dearer than the median or the profile's figure, whichever is
 more, as such a loop keeps a core busy (a real class's cheap runs, whose camera
 nobody watched, pulled the median to 0.36 and started a run of 1.31 cores
-beside one of 0.71: it starved). The queue is taken in order, each run that
+beside one of 0.71: it starved). A submission not yet measured whose robot
+files say what its camera draws (plan.camera_load) is counted at the runs of a
+camera alike, else at the class's costs scaled to its camera
+(:func:`camera_load`): the course's 800 x 800 at 30 Hz costs four times this
+package's 320 x 240 at 15 Hz. The queue is taken in order, each run that
 fits the free cores (but :data:`TEACHER`, the grading's own) started (first
 fit: a cheap run starts beside a dear one where the next in line would not
 fit); ``--jobs`` is only the most at once. The first run always starts,
