@@ -115,3 +115,27 @@ def test_a_cheap_camera_s_run_starts_beside_two_dear_ones(tmp_path, no_wait):
     assert ['a_course', 'b_course', 'c_package'] in cluster.at_once
     assert not any(len(group) > 3 or group.count('d_course') and 'a_course' in group
                    and 'b_course' in group for group in cluster.at_once)
+
+
+def test_each_submission_built_is_read_once_from_the_teacher_s_copy(tmp_path):
+    from types import SimpleNamespace
+    for name, text in (('course', COURSE), ('package', PACKAGE), ('none', '<robot/>')):
+        (tmp_path / name / 'urdf').mkdir(parents=True)
+        (tmp_path / name / 'urdf' / 'robot.gazebo').write_text(text)
+
+    def run(name, build=('.',), refused=None):
+        return SimpleNamespace(submission=name, spec=SimpleNamespace(
+            name=name, build=list(build), refused=refused, rejected=None))
+
+    class Copies(object):
+        read = []
+
+        def of(self, submission):
+            self.read.append(submission)
+            return SimpleNamespace(taken=lambda: SimpleNamespace(root=str(tmp_path / submission)))
+    copies = Copies()
+    runs = [run('course'), run('course'), run('package'), run('none'),
+            run('unbuilt', build=()), run('refused', refused='grading.yaml says so')]
+    assert camera_load.of_runs(runs, copies) == {'course': pytest.approx(30.0),
+                                                 'package': pytest.approx(1.8)}
+    assert sorted(copies.read) == ['course', 'none', 'package']
