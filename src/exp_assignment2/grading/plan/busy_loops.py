@@ -21,8 +21,7 @@ import os
 import sys
 import time
 
-from exp_assignment2.grading.entry.reading import python_files
-from exp_assignment2.grading.entry.submissions import SubmissionError
+from exp_assignment2.grading.entry.reading import of_built, python_files
 
 WAITS = frozenset((
     'sleep', 'wait', 'spin', 'spin_once', 'waitKey', 'wait_for_result', 'wait_for_server',
@@ -160,19 +159,5 @@ def in_folders(root, folders):
 
 def of_runs(runs, copies):
     """{name: [(file, line)]} of the submissions of ``runs`` whose built packages
-    have a busy loop (each read once, from the teacher's side's copy, ``copies``)."""
-    busy = {}
-    for name, run in {run.spec.name: run for run in runs}.items():
-        if not run.spec.build or run.spec.refused or run.spec.rejected:
-            continue
-        try:
-            root = copies.of(run.submission).taken().root
-        except SubmissionError:
-            continue
-        try:
-            found = in_folders(root, run.spec.build)
-        except Exception:   # noqa: BLE001 -- an estimate only: never the grading's end
-            continue
-        if found:
-            busy[name] = found
-    return busy
+    have a busy loop (entry.reading.of_built)."""
+    return of_built(runs, copies, in_folders)

@@ -19,7 +19,7 @@ import math
 import os
 import re
 
-from exp_assignment2.grading.entry.submissions import SubmissionError
+from exp_assignment2.grading.entry.reading import of_built
 
 ROBOT_FILES = ('.urdf', '.xacro', '.gazebo', '.sdf')
 FRAME_PIXELS = 800 * 800        # a frame counted: the course camera's
@@ -94,19 +94,5 @@ def frames(root, folders):
 
 def of_runs(runs, copies):
     """{name: frames a second} of the submissions of ``runs`` whose built
-    packages declare a camera (each read once, from the teacher's side's copy)."""
-    found = {}
-    for name, run in {run.spec.name: run for run in runs}.items():
-        if not run.spec.build or run.spec.refused or run.spec.rejected:
-            continue
-        try:
-            root = copies.of(run.submission).taken().root
-        except SubmissionError:
-            continue
-        try:
-            value = frames(root, run.spec.build)
-        except Exception:   # noqa: BLE001 -- an estimate only: never the grading's end
-            continue
-        if value is not None:
-            found[name] = value
-    return found
+    packages declare a camera (entry.reading.of_built)."""
+    return of_built(runs, copies, frames)
