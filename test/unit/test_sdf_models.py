@@ -6,7 +6,7 @@ import xml.etree.ElementTree as ET
 import pytest
 
 from exp_assignment2.sim.sdf import model_pose, model_to_urdf, read_world
-from sdf_helpers import ARM, box_model, shape, world
+from sdf_helpers import ARM, box_model, only, shape, world
 
 
 # includes
@@ -60,6 +60,15 @@ def test_installed_models_and_nested_includes_are_flattened(tmp_path):
     assert joint.get('type') == 'fixed' and joint.find('child').get('link') == 'lamp::link'
     assert joint.find('origin').get('xyz') == '0.3 0 0.5'
     assert m.pose == pytest.approx((5, 0, 0, 0, 0, 0)) and not m.static
+
+
+
+@pytest.mark.parametrize('flag, rests', [('', True), ('<allow_auto_disable>0</allow_auto_disable>',
+                                                       False)])
+def test_allow_auto_disable_comes_through_as_gazebo_reads_it(flag, rests):
+    from exp_assignment2.sim import gazebo_tags
+    model, urdf = only(box_model('barrel').replace('<static>1</static>', flag))
+    assert gazebo_tags.read(urdf).auto_disable is rests
 
 
 # joints, plugins, sensors

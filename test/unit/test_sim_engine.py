@@ -174,3 +174,74 @@ def test_a_library_no_gazebo_had_gets_gazebo_error_every_time(engine):
         'model %s: Failed to load plugin libgazebo_ros_diffdrive.so: libgazebo_ros_diffdrive.so: '
         'cannot open shared object file: No such file or directory' % name for name in 'ab']
     assert sorted(engine.models) == ['a', 'b']
+
+
+GROUND = '''<robot name="ground"><gazebo><static>true</static></gazebo>
+  <link name="base"><collision><origin xyz="0 0 -0.05"/><geometry><box size="20 20 0.1"/></geometry>
+  </collision></link></robot>'''
+JOINTED = '''<robot name="jointed">
+  <link name="base">
+    <inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/>
+    </inertial>
+    <collision><geometry><box size="0.2 0.2 0.2"/></geometry></collision>
+  </link>
+  <link name="lid">
+    <inertial><mass value="0.1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/>
+    </inertial>
+  </link>
+  <joint name="hinge" type="revolute"><parent link="base"/><child link="lid"/>
+    <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+</robot>'''
+SENSOR = ('<gazebo reference="base"><sensor type="camera" name="c"><update_rate>5</update_rate>'
+          '</sensor></gazebo>')
+
+
+def settle(engine, seconds=4.0):
+    for _ in range(int(seconds / engine.time_step)):
+        engine.step()
+
+
+def test_a_still_jointless_body_comes_to_rest_and_what_is_done_to_it_wakes_it(engine):
+    """As Gazebo's ODE auto-disables a model with no joint and no sensor: at
+    rest it is not stepped (a raw teleport leaves it hanging), and a pose, a
+    velocity or a body that hits it moves it again."""
+    from exp_assignment2.sim.bullet import p
+    engine.spawn('ground', GROUND, (0, 0, 0, 0, 0, 0))
+    engine.spawn('barrel', box(), (0, 0, 0.5, 0, 0, 0))
+    barrel = engine.models['barrel']
+    assert barrel.may_rest
+    settle(engine)
+    assert barrel.pose()[0][2] == pytest.approx(0.1, abs=0.01)
+    p.resetBasePositionAndOrientation(barrel.id, [0, 0, 1.0], [0, 0, 0, 1],
+                                      physicsClientId=barrel.client)
+    settle(engine, 0.5)
+    assert barrel.pose()[0][2] == pytest.approx(1.0, abs=1e-6)      # at rest: not stepped
+    barrel.set_pose((0, 0, 1.0))
+    settle(engine, 0.5)
+    assert barrel.pose()[0][2] < 0.5                                # a pose wakes it: it falls
+    settle(engine)
+    barrel.set_world_velocity((1.0, 0, 0), (0, 0, 0))
+    settle(engine, 0.5)
+    assert barrel.pose()[0][0] > 0.05                               # so does a velocity
+    settle(engine)
+    (x, y, z), _ = barrel.pose()
+    barrel.set_pose((x, y, z), twist=((0, 1.0, 0), (0, 0, 0)))    # set_model_state's twist
+    settle(engine, 0.5)
+    assert barrel.pose()[0][1] > y + 0.05
+    settle(engine)
+    (x, y, z), _ = barrel.pose()
+    engine.spawn('ram', box(), (x - 0.6, y, z, 0, 0, 0))
+    engine.models['ram'].set_world_velocity((4.0, 0, 0), (0, 0, 0))
+    settle(engine, 1.0)
+    assert barrel.pose()[0][0] > x + 0.1                            # and a body that hits it
+
+
+@pytest.mark.parametrize('name, text', [
+    ('jointed', JOINTED), ('sensor', box(SENSOR)),
+    ('never', box('<gazebo><allow_auto_disable>false</allow_auto_disable></gazebo>')),
+    ('static', box('<gazebo><static>true</static></gazebo>')),
+    ('kinematic', box('<gazebo reference="base"><gravity>0</gravity></gazebo>'))])
+def test_a_body_with_joints_a_sensor_or_auto_disable_off_is_never_put_to_rest(engine, name,
+                                                                               text):
+    engine.spawn(name, text, (0, 0, 0.5, 0, 0, 0))
+    assert not engine.models[name].may_rest

@@ -9,7 +9,9 @@ Gazebo users describe in their URDF what Gazebo adds to a model:
 * ``<gazebo reference="link"><material>Gazebo/Red</material>``: the link's
   colour in Gazebo (:data:`GAZEBO_MATERIALS`), ``<gravity>0</gravity>`` or
   ``<turnGravityOff>true</turnGravityOff>``, ``<mu1>``/``<mu2>`` friction;
-* ``<gazebo><static>true</static></gazebo>``: a model that never moves.
+* ``<gazebo><static>true</static></gazebo>``: a model that never moves;
+  ``<gazebo><allow_auto_disable>false</allow_auto_disable></gazebo>``: a model
+  the physics never puts to rest (SDF's default: true).
 
 :func:`read` returns them as plain data (:class:`GazeboTags`); which plugin
 serves which file name is the engine's business, not this module's.
@@ -35,12 +37,15 @@ class GazeboTags(object):
 
     ``plugins``: :class:`PluginDecl` in file order; ``colours``: link ->
     RGBA; ``gravity_off``: links with gravity off; ``friction``: link ->
-    (mu1, mu2); ``static``: the model never moves; ``warnings``: what was
+    (mu1, mu2); ``static``: the model never moves; ``auto_disable``: the
+    physics may put it to rest (SDF's ``allow_auto_disable``); ``sensors``:
+    every :class:`SensorDecl`, with a plugin or not; ``warnings``: what was
     not understood (a colour name, a bad number), for the caller to log."""
 
     def __init__(self):
-        self.plugins, self.colours, self.friction = [], {}, {}
+        self.plugins, self.colours, self.friction, self.sensors = [], {}, {}, []
         self.gravity_off, self.static, self.warnings = set(), False, []
+        self.auto_disable = True
         self._references = []
 
     def references(self):
@@ -111,6 +116,7 @@ def read(robot):
                 tags.plugins.append(_plugin(child, ref, None))
             elif tag == 'sensor':
                 sensor = _sensor(child, ref, tags)
+                tags.sensors.append(sensor)
                 plugins = child.findall('plugin')
                 if not plugins:
                     tags.warnings.append('sensor %s on %s has no plugin: nothing publishes it'
@@ -134,4 +140,6 @@ def read(robot):
                     tags.friction[ref] = tuple(mu)
             elif tag == 'static' and not ref:
                 tags.static = _truth(child.text)
+            elif tag == 'allow_auto_disable' and not ref:
+                tags.auto_disable = _truth(child.text)
     return tags

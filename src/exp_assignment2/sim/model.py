@@ -10,6 +10,12 @@ it (joint motors, base velocity, a new pose). Three kinds of body:
   its pose (the ball). Below the ground (z < 0) it is hidden from cameras;
 * dynamic: everything else, moved by physics (the robots).
 
+A dynamic model with no joint that moves, no sensor and no
+``allow_auto_disable`` false is put to rest by the physics once it has been
+still for a while (a barrel, a box), as Gazebo's ODE auto-disables such a
+model's bodies; a body that touches it, or a pose or velocity given to it,
+wakes it. At rest it costs no physics step.
+
 A model a ball script holds (:meth:`Model.hold`, :mod:`.scripted_ball`) is
 kinematic and moved by the script alone: what others do to it
 (:meth:`set_pose`, :meth:`move_kinematic`, :meth:`set_world_velocity`) is
@@ -49,6 +55,7 @@ class Model(object):
         self.id = self.body.id
         self.spawn_hidden = self.hidden = bool(hidden) and self.kinematic
         self.placed = 0        # times put somewhere by a command (set_model/link_state)
+        self.removed = False
         self.script = None     # the ball script holding it (facts), else None
         self.ignored = 0       # placements refused while a script holds it
         self._kinematic_pose = [x, y, z, yaw]
@@ -61,6 +68,28 @@ class Model(object):
                                 physicsClientId=self.client)
         if self.hidden:
             self._place()
+        gz = urdf.gazebo
+        self.may_rest = not (self.static or self.kinematic or self.body.movable or gz.sensors
+                             or not gz.auto_disable)
+        if self.may_rest:
+            p.changeDynamics(self.id, -1, activationState=p.ACTIVATION_STATE_ENABLE_SLEEPING,
+                             physicsClientId=self.client)
+
+    def _wake(self, linear=(0, 0, 0), angular=(0, 0, 0)):
+        """A body at rest moves again, from the next step on (pybullet leaves
+        it where it is told to be, frozen, until something touches it). A
+        body at rest has no velocity at all; the first step of one woken
+        wipes the velocity it is given, which it is given again after it."""
+        if not self.may_rest:
+            return
+        lin, ang = p.getBaseVelocity(self.id, physicsClientId=self.client)
+        if any(lin) or any(ang):
+            return                      # awake
+        p.changeDynamics(self.id, -1, activationState=p.ACTIVATION_STATE_WAKE_UP,
+                         physicsClientId=self.client)
+        if any(linear) or any(angular):
+            self.physics.after_step(lambda: self.removed or p.resetBaseVelocity(
+                self.id, list(linear), list(angular), physicsClientId=self.client))
 
     @property
     def base_frame(self):
@@ -184,6 +213,7 @@ class Model(object):
         """A dynamic body's base velocity (world frame), as Gazebo's SetLinearVel."""
         if self.script is not None:
             return
+        self._wake(linear, angular)
         p.resetBaseVelocity(self.id, list(linear), list(angular), physicsClientId=self.client)
 
     def move_kinematic(self, dx, dy, dyaw, twist=None):
@@ -213,9 +243,10 @@ class Model(object):
             self.hidden = position[2] < 0.0
             self._place()
             return
+        lin, ang = twist if twist is not None else ((0, 0, 0), (0, 0, 0))
+        self._wake(lin, ang)
         com = p.multiplyTransforms(position, quaternion, *self.body.inertial)
         p.resetBasePositionAndOrientation(self.id, com[0], com[1], physicsClientId=self.client)
-        lin, ang = twist if twist is not None else ((0, 0, 0), (0, 0, 0))
         p.resetBaseVelocity(self.id, list(lin), list(ang), physicsClientId=self.client)
 
     def _place(self):
@@ -229,6 +260,8 @@ class Model(object):
         """From now on the script described by ``facts`` (plain data) moves
         this body, kinematically, and nothing else does."""
         if not self.kinematic:      # a dynamic sphere: no physics acts on it any more
+            self._wake()
+            self.may_rest = False
             (x, y, z), quat = self.pose()
             self._kinematic_pose = [x, y, z, p.getEulerFromQuaternion(quat)[2]]
             p.changeDynamics(self.id, -1, mass=0.0, physicsClientId=self.client)
@@ -269,9 +302,11 @@ class Model(object):
             self.hidden = self.spawn_hidden
             self._place()
             return
+        self._wake()
         com = p.multiplyTransforms([x, y, z], self._quat, *self.body.inertial)
         p.resetBasePositionAndOrientation(self.id, com[0], com[1], physicsClientId=self.client)
         p.resetBaseVelocity(self.id, [0, 0, 0], [0, 0, 0], physicsClientId=self.client)
 
     def remove(self):
+        self.removed = True
         self.physics.remove(self.id)

@@ -48,6 +48,7 @@ class Physics(object):
         p.setGravity(*gravity, physicsClientId=self.client)
         p.setTimeStep(self.time_step, physicsClientId=self.client)
         self._tmp = tempfile.TemporaryDirectory(prefix='exp_assignment2_')
+        self._after_step = []       # once, after the next step
         self._texture = None
         self.egl_plugin = self._load_egl() if egl else None
 
@@ -73,6 +74,12 @@ class Physics(object):
 
     def step(self):
         p.stepSimulation(physicsClientId=self.client)
+        while self._after_step:
+            self._after_step.pop(0)()
+
+    def after_step(self, fn):
+        """Call ``fn()`` once, after the next step."""
+        self._after_step.append(fn)
 
     def _load_egl(self):
         loader = pkgutil.get_loader('eglRenderer')

@@ -22,11 +22,12 @@ DEFAULT_EFFORT, DEFAULT_VELOCITY = 1000.0, 100.0    # where SDF gives none (it s
 
 class Model(object):
     """A model as plain data: ``links`` (name -> Link, the first is the root),
-    ``joints``, ``plugins`` (elements), ``static`` and ``pose`` (4x4, in the
-    parent's frame)."""
+    ``joints``, ``plugins`` (elements), ``static``, ``auto_disable`` (SDF's
+    ``allow_auto_disable``) and ``pose`` (4x4, in the parent's frame)."""
 
-    def __init__(self, name, pose, static):
+    def __init__(self, name, pose, static, auto_disable=True):
         self.name, self.pose, self.static = name, pose, static
+        self.auto_disable = auto_disable
         self.links, self.joints, self.plugins, self.fixed_to_world = OrderedDict(), [], [], False
         self.warnings = []      # what model_urdf changed, one line each
 
@@ -53,7 +54,8 @@ def read_model(elem, where, context):
     name = elem.get('name') or ''
     if not name:
         raise SdfError('%s: a model needs a name' % where)
-    model = Model(name, pose_of(elem, where), flag(elem, 'static'))
+    model = Model(name, pose_of(elem, where), flag(elem, 'static'),
+                  flag(elem, 'allow_auto_disable', default=True))
     for child in elem:
         if child.tag == 'link':
             link = _read_link(child, '%s/link[%s]' % (where, child.get('name', '')), context)

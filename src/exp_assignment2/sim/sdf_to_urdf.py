@@ -61,6 +61,8 @@ def model_urdf(model):
         _write_joint(robot, joint, frames)
     if model.static or model.fixed_to_world:
         ET.SubElement(ET.SubElement(robot, 'gazebo'), 'static').text = 'true'
+    if not model.auto_disable:
+        ET.SubElement(ET.SubElement(robot, 'gazebo'), 'allow_auto_disable').text = 'false'
     for plugin in model.plugins:
         ET.SubElement(robot, 'gazebo').append(copy.deepcopy(plugin))
     for link in links:
