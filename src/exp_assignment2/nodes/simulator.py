@@ -29,6 +29,7 @@ from exp_assignment2.ros.world_markers import WorldMarkers
 from exp_assignment2.launch_surface import viewer
 from exp_assignment2.sim import ball_setting, releases
 from exp_assignment2.sim.engine import Engine
+from exp_assignment2.sim.model import GUI_GRID
 from exp_assignment2.sim.plugins import registry
 from exp_assignment2.sim.world import parse_model, parse_world
 from exp_assignment2.ros.clock_watch import own_clock, watch_clock
@@ -170,9 +171,9 @@ class SimulatorNode(object):
             rospy.loginfo('simulator: %s', note)
         for warning in world.warnings:
             rospy.logwarn('simulator: %s', warning)
-        for model in world.models:
+        for model in world.models:     # the ground plane under gzclient's grid
             self.engine.spawn(model.name, model.urdf, model.pose,
-                              grid=model.name == 'ground_plane')
+                              grid=GUI_GRID if model.name == 'ground_plane' else False)
 
     def _urdf_dir(self):
         # with original-env --package, exp_assignment2 is the user's package:

@@ -30,6 +30,9 @@ from exp_assignment2.geometry import all_finite
 from exp_assignment2.sim.poses import in_region
 
 HIDDEN_Z = -50.0   # where a hidden body is put, far below every camera's view
+# Gazebo's 1 m grid (rendering::Grid): a GUI visual, drawn in gzclient's view and
+# not in a camera sensor's images; an SDF world's ground plane has it
+GUI_GRID = 'gui'
 
 
 class Model(object):
@@ -43,7 +46,10 @@ class Model(object):
 
     def __init__(self, physics, name, urdf, pose, namespace='', grid=False, hidden=False):
         self.physics, self.client = physics, physics.client
-        self.name, self.urdf, self.grid = name, urdf, bool(grid)
+        # True: pybullet's grid texture, seen by every camera; GUI_GRID: Gazebo's
+        # grid, a GUI visual its camera sensors do not see
+        self.name, self.urdf = name, urdf
+        self.grid = GUI_GRID if grid == GUI_GRID else bool(grid)
         self.namespace = namespace.strip('/')
         self.spawn_pose = tuple(float(v) for v in pose)
         self.static = urdf.gazebo.static
@@ -63,7 +69,7 @@ class Model(object):
             if link in self.body.links and mu1 is not None:
                 p.changeDynamics(self.id, self.body.links[link], lateralFriction=mu1,
                                  physicsClientId=self.client)
-        if self.grid:
+        if self.grid is True:
             p.changeVisualShape(self.id, -1, textureUniqueId=physics.grid_texture(),
                                 physicsClientId=self.client)
         if self.hidden:

@@ -96,7 +96,7 @@ class GLBackend(object):
             description.link_pose(poses, camera.model, camera.link)
         return self._renderer(camera.width, camera.height, description).render(
             poses, camera.frame(link), hfov_deg=camera.hfov, near=camera.near, far=camera.far,
-            hidden=hidden, out=self._buffer(camera))
+            hidden=hidden, out=self._buffer(camera), gui=camera.world_pose is not None)
 
     def _buffer(self, camera):
         ring = self.buffers.get(camera)

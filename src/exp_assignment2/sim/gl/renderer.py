@@ -84,6 +84,11 @@ void main() {
 '''
 
 
+# a draw's grid (scene.NO_GRID, GRID, GUI_GRID_ONLY) -> its program: plain (0) or grid (1)
+GRID_PROGRAM = (0, 1, 0)
+GRID_PROGRAM_GUI = (0, 1, 1)
+
+
 class GLRenderer(object):
     """Draws a :class:`~.scene.SceneDescription` with OpenGL into BGR images.
 
@@ -158,11 +163,12 @@ class GLRenderer(object):
             self._upload(ctx, description)
 
     def render(self, poses, camera_pose, hfov_deg=80.0, near=0.05, far=40.0, hidden=(),
-               out=None):
+               out=None, gui=False):
         """Draw the scene at ``poses`` (a :meth:`~.scene.SceneReader.read_poses`
         snapshot) seen from ``camera_pose`` (4x4 world pose, or a (position,
         quaternion or 3x3 rotation) tuple); ``hidden``: model names or body
-        ids not to draw.
+        ids not to draw; ``gui``: the camera is Gazebo's user camera, which
+        sees the GUI's grid too (a sensor's does not).
 
         Returns a contiguous (height, width, 3) uint8 BGR image, row 0 at the
         top: ``out`` if given, else an internal buffer that the next call
@@ -173,7 +179,8 @@ class GLRenderer(object):
         poses = np.ascontiguousarray(poses, np.float32)
         skip = self.description.hidden_slots(hidden) if hidden else ()
         with self.gl.current():
-            self._draw(poses, vp.T.astype(np.float32).tobytes(), skip)   # GL is column-major
+            self._draw(poses, vp.T.astype(np.float32).tobytes(), skip,   # GL: column-major
+                       GRID_PROGRAM_GUI if gui else GRID_PROGRAM)
             self.gl.finish()
             image = self._image if out is None else out
             if self._cvt is None:
@@ -182,7 +189,7 @@ class GLRenderer(object):
             self.read_fbo.read_into(self._rgba, components=4, alignment=1)
         return self._cvt(self._rgba, image)
 
-    def _draw(self, poses, view_proj, skip):
+    def _draw(self, poses, view_proj, skip, program_of):
         ctx = self.gl.ctx
         for prog in self.programs:
             prog['view_proj'].write(view_proj)
@@ -198,8 +205,9 @@ class GLRenderer(object):
             if cull != culling:
                 (ctx.enable if cull else ctx.disable)(ctx.CULL_FACE)
                 culling = cull
-            self.programs[grid]['model'].write(poses[slot])
-            self.vaos[grid].render(first=first, vertices=count)
+            program = program_of[grid]
+            self.programs[program]['model'].write(poses[slot])
+            self.vaos[program].render(first=first, vertices=count)
         if self.read_fbo is not self.fbo:
             ctx.copy_framebuffer(self.read_fbo, self.fbo)
 

@@ -11,8 +11,9 @@
   that constructs it (e.g. the camera's worker) and draws a description.
 
 A model to draw is anything with ``name``, ``id`` (pybullet body id), ``urdf``
-and ``grid`` (its base link gets the 1 m floor grid): a
-:class:`~exp_assignment2.sim.model.Model`, or :class:`Drawable` in tests.
+and ``grid`` (its base link gets the 1 m floor grid: True in every camera's
+view, :data:`~exp_assignment2.sim.model.GUI_GRID` in Gazebo's user camera's
+only): a :class:`~exp_assignment2.sim.model.Model`, or :class:`Drawable` in tests.
 """
 import os
 from collections import namedtuple
@@ -27,6 +28,7 @@ from .renderer import GLRenderer, view_projection
 __all__ = ['Drawable', 'GLRenderer', 'SceneDescription', 'SceneReader', 'view_projection']
 
 Drawable = namedtuple('Drawable', 'name id urdf grid')
+NO_GRID, GRID, GUI_GRID_ONLY = 0, 1, 2      # a draw's grid: none, always, the user camera's
 
 
 def drawable(body_id, path, grid=False, name=None):
@@ -42,7 +44,7 @@ class SceneDescription(object):
     ``vertices``: (n, 9) float32 rows (:data:`.meshes.VERTEX_FORMAT`) in
     their link's frame; ``indices``: uint32 triangle corners; ``draws``: (slot,
     first index, index count, cull back faces, grid) per group, grid floors
-    last; ``slots``: (model name, link name) per pose slot; ``model_names``,
+    last (grid: :data:`NO_GRID`, :data:`GRID` or :data:`GUI_GRID_ONLY`); ``slots``: (model name, link name) per pose slot; ``model_names``,
     ``body_ids`` and ``model_slots`` (slot range start, stop) per model.
     """
 
@@ -119,7 +121,8 @@ class SceneReader(object):
                                      % (model.name, link, body_id))
                 # The grid goes where the simulator put pybullet's grid
                 # texture: on the base link of a grid model.
-                is_grid = bool(model.grid) and index[at] == -1
+                is_grid = NO_GRID if not model.grid or index[at] != -1 else \
+                    GRID if model.grid is True else GUI_GRID_ONLY
                 for v in visuals:
                     rows = visual_vertices(v, frame)
                     if rows is not None:
