@@ -13,6 +13,7 @@ import shutil
 import socket
 import sys
 
+from exp_assignment2.grading.run.cluster import quiet_worker_environment
 from exp_assignment2.grading.run.tasks import package_version
 
 
@@ -33,6 +34,7 @@ def main(argv=None):
     name = '%s-%d' % (socket.gethostname(), os.getpid())
     print('[grade-worker] %s: exp_assignment2 %s, at most %d runs at once, scheduler %s'
           % (name, package_version(), args.runs, args.scheduler), file=sys.stderr, flush=True)
+    os.environ.update(quiet_worker_environment())
     os.execv(sys.executable, [sys.executable, program, args.scheduler, '--nthreads',
                               str(args.runs), '--resources', 'runs=%d' % args.runs,
                               '--name', name, '--no-dashboard'] + rest)
