@@ -236,12 +236,24 @@ def test_a_still_jointless_body_comes_to_rest_and_what_is_done_to_it_wakes_it(en
     assert barrel.pose()[0][0] > x + 0.1                            # and a body that hits it
 
 
+def test_a_body_at_rest_moves_its_joints_when_told(engine):
+    """A model with joints and no plugin rests too; a joint command wakes it."""
+    engine.spawn('ground', GROUND, (0, 0, 0, 0, 0, 0))
+    engine.spawn('chest', JOINTED, (0, 0, 0.5, 0, 0, 0))
+    chest = engine.models['chest']
+    assert chest.may_rest
+    settle(engine)
+    chest.set_joint_velocity('hinge', 1.0, 10.0)
+    settle(engine, 0.5)
+    assert chest.joint_states(['hinge'])[1][0] > 0.2
+
+
 @pytest.mark.parametrize('name, text', [
-    ('jointed', JOINTED), ('sensor', box(SENSOR)),
+    ('driven', box(plugin_tag('librecorder.so'))), ('sensor', box(SENSOR)),
     ('never', box('<gazebo><allow_auto_disable>false</allow_auto_disable></gazebo>')),
     ('static', box('<gazebo><static>true</static></gazebo>')),
     ('kinematic', box('<gazebo reference="base"><gravity>0</gravity></gazebo>'))])
-def test_a_body_with_joints_a_sensor_or_auto_disable_off_is_never_put_to_rest(engine, name,
-                                                                               text):
+def test_a_driven_body_one_with_a_sensor_or_auto_disable_off_is_never_put_to_rest(engine, name,
+                                                                                  text):
     engine.spawn(name, text, (0, 0, 0.5, 0, 0, 0))
     assert not engine.models[name].may_rest

@@ -10,11 +10,12 @@ it (joint motors, base velocity, a new pose). Three kinds of body:
   its pose (the ball). Below the ground (z < 0) it is hidden from cameras;
 * dynamic: everything else, moved by physics (the robots).
 
-A dynamic model with no joint that moves, no sensor and no
+A dynamic model that nothing drives (no plugin, no sensor) and with no
 ``allow_auto_disable`` false is put to rest by the physics once it has been
-still for a while (a barrel, a box), as Gazebo's ODE auto-disables such a
-model's bodies; a body that touches it, or a pose or velocity given to it,
-wakes it. At rest it costs no physics step.
+still for a while (a barrel, a box, the course's human), as Gazebo's ODE
+auto-disables a model with no joint; a body that touches it, or a pose, a
+velocity or a joint command given to it, wakes it. At rest it costs no
+physics step.
 
 A model a ball script holds (:meth:`Model.hold`, :mod:`.scripted_ball`) is
 kinematic and moved by the script alone: what others do to it
@@ -75,7 +76,7 @@ class Model(object):
         if self.hidden:
             self._place()
         gz = urdf.gazebo
-        self.may_rest = not (self.static or self.kinematic or self.body.movable or gz.sensors
+        self.may_rest = not (self.static or self.kinematic or gz.plugins or gz.sensors
                              or not gz.auto_disable)
         if self.may_rest:
             p.changeDynamics(self.id, -1, activationState=p.ACTIVATION_STATE_ENABLE_SLEEPING,
@@ -195,18 +196,21 @@ class Model(object):
     # what plugins do to it
     def set_joint_velocity(self, name, velocity, max_force):
         """Drive a joint's motor at ``velocity`` (rad/s) with at most ``max_force``."""
+        self._wake()
         p.setJointMotorControl2(self.id, self.joint_index(name), p.VELOCITY_CONTROL,
                                 targetVelocity=velocity, force=max_force,
                                 physicsClientId=self.client)
 
     def set_joint_position(self, name, position, max_force, max_velocity):
         """Drive a joint's motor to ``position`` (rad or m)."""
+        self._wake()
         p.setJointMotorControl2(self.id, self.joint_index(name), p.POSITION_CONTROL,
                                 targetPosition=position, force=max_force,
                                 maxVelocity=max_velocity, physicsClientId=self.client)
 
     def set_joint_state(self, name, position):
         """Put a joint at ``position`` at once, at rest (Gazebo's set_model_configuration)."""
+        self._wake()
         p.resetJointState(self.id, self.joint_index(name), position, 0.0,
                           physicsClientId=self.client)
 
