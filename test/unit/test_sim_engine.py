@@ -177,8 +177,8 @@ def test_a_library_no_gazebo_had_gets_gazebo_error_every_time(engine):
 
 
 GROUND = '''<robot name="ground"><gazebo><static>true</static></gazebo>
-  <link name="base"><collision><origin xyz="0 0 -0.05"/><geometry><box size="20 20 0.1"/></geometry>
-  </collision></link></robot>'''
+  <link name="base"><collision><origin xyz="0 0 -0.05"/>
+    <geometry><box size="20 20 0.1"/></geometry></collision></link></robot>'''
 JOINTED = '''<robot name="jointed">
   <link name="base">
     <inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/>
@@ -186,8 +186,8 @@ JOINTED = '''<robot name="jointed">
     <collision><geometry><box size="0.2 0.2 0.2"/></geometry></collision>
   </link>
   <link name="lid">
-    <inertial><mass value="0.1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/>
-    </inertial>
+    <inertial><mass value="0.1"/>
+      <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
   </link>
   <joint name="hinge" type="revolute"><parent link="base"/><child link="lid"/>
     <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>

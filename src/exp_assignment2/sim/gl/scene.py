@@ -44,7 +44,8 @@ class SceneDescription(object):
     ``vertices``: (n, 9) float32 rows (:data:`.meshes.VERTEX_FORMAT`) in
     their link's frame; ``indices``: uint32 triangle corners; ``draws``: (slot,
     first index, index count, cull back faces, grid) per group, grid floors
-    last (grid: :data:`NO_GRID`, :data:`GRID` or :data:`GUI_GRID_ONLY`); ``slots``: (model name, link name) per pose slot; ``model_names``,
+    last (grid: :data:`NO_GRID`, :data:`GRID` or :data:`GUI_GRID_ONLY`);
+    ``slots``: (model name, link name) per pose slot; ``model_names``,
     ``body_ids`` and ``model_slots`` (slot range start, stop) per model.
     """
 
