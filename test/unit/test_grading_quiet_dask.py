@@ -6,7 +6,7 @@ import os
 import subprocess
 import sys
 
-from exp_assignment2.grading.run import cluster
+from exp_assignment2.grading.run import cluster, dask_settings
 
 def test_the_local_worker_neither_profiles_nor_steals_and_looks_at_memory_seldom():
     grading = cluster.Cluster(jobs=1, log=lambda line: None)
@@ -22,9 +22,9 @@ def test_the_local_worker_neither_profiles_nor_steals_and_looks_at_memory_seldom
 
 
 def test_a_grade_worker_reads_the_same_settings_from_its_environment():
-    keys = sorted(cluster.QUIET_WORKER)
-    env = dict(os.environ, **cluster.quiet_worker_environment())
+    keys = sorted(dask_settings.QUIET_WORKER)
+    env = dict(os.environ, **dask_settings.quiet_worker_environment())
     read = subprocess.run(
         [sys.executable, '-c', 'import dask.config, json; print(json.dumps([dask.config.get(k) '
          'for k in %r]))' % keys], env=env, capture_output=True, text=True, check=True).stdout
-    assert json.loads(read) == [cluster.QUIET_WORKER[k] for k in keys]
+    assert json.loads(read) == [dask_settings.QUIET_WORKER[k] for k in keys]

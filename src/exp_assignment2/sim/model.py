@@ -10,12 +10,7 @@ it (joint motors, base velocity, a new pose). Three kinds of body:
   its pose (the ball). Below the ground (z < 0) it is hidden from cameras;
 * dynamic: everything else, moved by physics (the robots).
 
-A dynamic model that nothing drives (no plugin, no sensor) and with no
-``allow_auto_disable`` false is put to rest by the physics once it has been
-still for a while (a barrel, a box, the course's human), as Gazebo's ODE
-auto-disables a model with no joint; a body that touches it, or a pose, a
-velocity or a joint command given to it, wakes it. At rest it costs no
-physics step.
+A dynamic model that nothing drives rests while still (:mod:`.resting`).
 
 A model a ball script holds (:meth:`Model.hold`, :mod:`.scripted_ball`) is
 kinematic and moved by the script alone: what others do to it
@@ -28,6 +23,7 @@ import numpy as np
 from exp_assignment2.sim.bullet import p
 
 from exp_assignment2.geometry import all_finite
+from exp_assignment2.sim import resting
 from exp_assignment2.sim.poses import in_region
 
 HIDDEN_Z = -50.0   # where a hidden body is put, far below every camera's view
@@ -75,28 +71,7 @@ class Model(object):
                                 physicsClientId=self.client)
         if self.hidden:
             self._place()
-        gz = urdf.gazebo
-        self.may_rest = not (self.static or self.kinematic or gz.plugins or gz.sensors
-                             or not gz.auto_disable)
-        if self.may_rest:
-            p.changeDynamics(self.id, -1, activationState=p.ACTIVATION_STATE_ENABLE_SLEEPING,
-                             physicsClientId=self.client)
-
-    def _wake(self, linear=(0, 0, 0), angular=(0, 0, 0)):
-        """A body at rest moves again, from the next step on (pybullet leaves
-        it where it is told to be, frozen, until something touches it). A
-        body at rest has no velocity at all; the first step of one woken
-        wipes the velocity it is given, which it is given again after it."""
-        if not self.may_rest:
-            return
-        lin, ang = p.getBaseVelocity(self.id, physicsClientId=self.client)
-        if any(lin) or any(ang):
-            return                      # awake
-        p.changeDynamics(self.id, -1, activationState=p.ACTIVATION_STATE_WAKE_UP,
-                         physicsClientId=self.client)
-        if any(linear) or any(angular):
-            self.physics.after_step(lambda: self.removed or p.resetBaseVelocity(
-                self.id, list(linear), list(angular), physicsClientId=self.client))
+        self.may_rest = resting.may_rest(self)
 
     @property
     def base_frame(self):
@@ -196,21 +171,21 @@ class Model(object):
     # what plugins do to it
     def set_joint_velocity(self, name, velocity, max_force):
         """Drive a joint's motor at ``velocity`` (rad/s) with at most ``max_force``."""
-        self._wake()
+        resting.wake(self)
         p.setJointMotorControl2(self.id, self.joint_index(name), p.VELOCITY_CONTROL,
                                 targetVelocity=velocity, force=max_force,
                                 physicsClientId=self.client)
 
     def set_joint_position(self, name, position, max_force, max_velocity):
         """Drive a joint's motor to ``position`` (rad or m)."""
-        self._wake()
+        resting.wake(self)
         p.setJointMotorControl2(self.id, self.joint_index(name), p.POSITION_CONTROL,
                                 targetPosition=position, force=max_force,
                                 maxVelocity=max_velocity, physicsClientId=self.client)
 
     def set_joint_state(self, name, position):
         """Put a joint at ``position`` at once, at rest (Gazebo's set_model_configuration)."""
-        self._wake()
+        resting.wake(self)
         p.resetJointState(self.id, self.joint_index(name), position, 0.0,
                           physicsClientId=self.client)
 
@@ -223,7 +198,7 @@ class Model(object):
         """A dynamic body's base velocity (world frame), as Gazebo's SetLinearVel."""
         if self.script is not None:
             return
-        self._wake(linear, angular)
+        resting.wake(self, linear, angular)
         p.resetBaseVelocity(self.id, list(linear), list(angular), physicsClientId=self.client)
 
     def move_kinematic(self, dx, dy, dyaw, twist=None):
@@ -254,7 +229,7 @@ class Model(object):
             self._place()
             return
         lin, ang = twist if twist is not None else ((0, 0, 0), (0, 0, 0))
-        self._wake(lin, ang)
+        resting.wake(self, lin, ang)
         com = p.multiplyTransforms(position, quaternion, *self.body.inertial)
         p.resetBasePositionAndOrientation(self.id, com[0], com[1], physicsClientId=self.client)
         p.resetBaseVelocity(self.id, list(lin), list(ang), physicsClientId=self.client)
@@ -270,7 +245,7 @@ class Model(object):
         """From now on the script described by ``facts`` (plain data) moves
         this body, kinematically, and nothing else does."""
         if not self.kinematic:      # a dynamic sphere: no physics acts on it any more
-            self._wake()
+            resting.wake(self)
             self.may_rest = False
             (x, y, z), quat = self.pose()
             self._kinematic_pose = [x, y, z, p.getEulerFromQuaternion(quat)[2]]
@@ -312,7 +287,7 @@ class Model(object):
             self.hidden = self.spawn_hidden
             self._place()
             return
-        self._wake()
+        resting.wake(self)
         com = p.multiplyTransforms([x, y, z], self._quat, *self.body.inertial)
         p.resetBasePositionAndOrientation(self.id, com[0], com[1], physicsClientId=self.client)
         p.resetBaseVelocity(self.id, [0, 0, 0], [0, 0, 0], physicsClientId=self.client)

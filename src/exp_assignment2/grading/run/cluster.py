@@ -25,26 +25,11 @@ from exp_assignment2.grading import record
 from exp_assignment2.grading.judge import verdicts
 from exp_assignment2.grading.run import ending
 from exp_assignment2.grading.run import tasks
+from exp_assignment2.grading.run.dask_settings import QUIET_LOCAL
 
 CONNECT_TIMEOUT = 5.0          # s to reach a scheduler, then one line
 # the grading's Dask names, each with the grading's token
 STOP, NO_NEW, STARTS = 'exp2-grade-stop-', 'exp2-grade-no-new-', 'exp2-grade-starts-'
-# A worker's housekeeping, for runs of minutes that no dashboard watches: Dask samples
-# every thread's stack 100 times a second (its profiler), measures the machine every
-# 0.5 s and the worker's memory every 0.1 s. On one machine that was 0.05 of a core
-# beside the runs, all grading long.
-QUIET_WORKER = {'distributed.worker.profile.enabled': False,
-                'distributed.admin.system-monitor.interval': '5s',
-                'distributed.worker.memory.monitor-interval': '1s'}
-# and the in-process scheduler of one worker: nothing to steal, no one to tell its ticks
-QUIET_LOCAL = dict(QUIET_WORKER, **{'distributed.scheduler.work-stealing': False,
-                                    'distributed.admin.tick.interval': '500ms'})
-
-
-def quiet_worker_environment():
-    """:data:`QUIET_WORKER` as the environment a ``dask-worker`` reads it from."""
-    return {'DASK_' + key.upper().replace('.', '__').replace('-', '_'): str(value)
-            for key, value in QUIET_WORKER.items()}
 
 
 class ClusterError(Exception):

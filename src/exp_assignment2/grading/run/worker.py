@@ -13,7 +13,7 @@ import shutil
 import socket
 import sys
 
-from exp_assignment2.grading.run.cluster import quiet_worker_environment
+from exp_assignment2.grading.run.dask_settings import quiet_worker_environment
 from exp_assignment2.grading.run.tasks import package_version
 
 
