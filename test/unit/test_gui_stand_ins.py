@@ -28,6 +28,32 @@ def test_frames_come_out_bgr():
         to_bgr(Image(height=1, width=1, encoding='16UC1', step=2, data=b'\0\0'))
 
 
+@pytest.mark.parametrize('argv,display,clock', [
+    (['/robot/camera1/image_raw'], ':7', True),      # a window that shows frames
+    ([], ':7', False),                               # no topic: nothing to show
+    (['/robot/camera1/image_raw'], None, False),     # no display: no window
+])
+def test_rqt_image_view_takes_the_simulated_clock_only_for_a_window(argv, display, clock,
+                                                                    monkeypatch):
+    """/clock comes a thousand times a simulated second: a viewer that shows nothing
+    does not subscribe to it (rospy's ``disable_rostime``)."""
+    from exp_assignment2.launch_surface import image_view
+    asked, shown = {}, []
+    monkeypatch.setattr(image_view.rospy, 'init_node', lambda name, **kw: asked.update(kw))
+    monkeypatch.setattr(image_view.rospy, 'myargv', lambda: ['rqt_image_view'] + argv)
+    monkeypatch.setattr(image_view.rospy, 'signal_shutdown', lambda reason: None)
+    monkeypatch.setattr(image_view.rospy, 'loginfo', lambda *a: None)
+    monkeypatch.setattr(image_view, 'Stop', lambda: SimpleNamespace(wait=lambda: None))
+    monkeypatch.setattr(image_view, '_show', lambda topic, where: shown.append(topic))
+    if display:
+        monkeypatch.setenv('DISPLAY', display)
+    else:
+        monkeypatch.delenv('DISPLAY', raising=False)
+    assert image_view.main() == 0
+    assert asked['disable_rostime'] is (not clock)
+    assert shown == (argv if clock else [])
+
+
 def test_a_machine_is_its_states_with_the_active_one_marked():
     structure = SimpleNamespace(path='/SM_ROOT', children=['KITCHEN', 'GARDEN'],
                                 internal_outcomes=['go', 'go'],

@@ -116,3 +116,39 @@ def test_a_truncated_jpeg_is_not_an_image_or_is_a_whole_one():
     data = encode_jpeg(img, 80)
     decoded = decode_jpeg(data[:len(data) // 2])
     assert decoded is None or decoded.shape == (64, 64, 3)
+
+
+def _chroma_sampling(jpeg):
+    """(h, v) sampling factors of each component in a baseline JPEG's frame header."""
+    at = jpeg.find(b'\xff\xc0')
+    assert at >= 0, 'not a baseline JPEG'
+    count = jpeg[at + 9]
+    return [(jpeg[at + 11 + 3 * i] >> 4, jpeg[at + 11 + 3 * i] & 15) for i in range(count)]
+
+
+@pytest.mark.parametrize('encoder', ['installed', 'opencv'])
+def test_a_jpeg_is_what_opencv_makes_of_the_same_pixels(encoder, monkeypatch):
+    """simplejpeg where installed, OpenCV else: baseline, 4:2:0 chroma, the same
+    quality (their decoded pixels differ by a rounding), the input's colours."""
+    from exp_assignment2 import vision
+    if encoder == 'opencv':
+        monkeypatch.setattr(vision, 'simplejpeg', None)
+    img = scene(width=800, height=600, ball=(500, 300, 80))
+    img[40:120, 40:200] = (30, 60, 220)
+    jpeg = vision.encode_jpeg(img, 80)
+    ok, reference = cv2.imencode('.jpg', img, [int(cv2.IMWRITE_JPEG_QUALITY), 80])
+    assert ok and jpeg[:2] == b'\xff\xd8'
+    assert _chroma_sampling(jpeg) == _chroma_sampling(reference.tobytes()) == \
+        [(2, 2), (1, 1), (1, 1)]
+    ours, theirs = decode_jpeg(jpeg).astype(int), decode_jpeg(reference.tobytes()).astype(int)
+    assert np.abs(ours - theirs).mean() < 0.5 and np.abs(ours - img).mean() < 2.0
+    assert 0.9 < len(jpeg) / len(reference) < 1.1
+
+
+def test_a_jpeg_of_a_view_or_an_odd_quality_is_made_all_the_same():
+    """Pixels that are a view (not contiguous) and qualities out of 1..100 (OpenCV
+    clamps them) still make a JPEG."""
+    img = scene(width=400, height=300, ball=(200, 150, 40))
+    for pixels, quality in ((img[:, ::2], 80), (img, 0), (img, 150)):
+        decoded = decode_jpeg(encode_jpeg(pixels, quality))
+        assert decoded is not None and decoded.shape == pixels.shape
